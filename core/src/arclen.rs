@@ -1,0 +1,193 @@
+//! Arc length along a closed outline: a table of cumulative segment lengths, and the inverse
+//! (arc length → segment and curve parameter), built on kurbo's `ParamCurveArclen`
+//! (adaptive Gauss–Legendre quadrature of |B'(t)|).
+//!
+//! `accuracy` here is **relative**: the perimeter is within `accuracy × perimeter` of the truth.
+//! kurbo's own accuracy is absolute; units are the host's (points, px, mm), so a relative
+//! tolerance is the only one that means the same thing for a 0.01-unit shape and a 1e5-unit one.
+//! Each segment gets the absolute budget `accuracy × (its control-polygon length)`; the control
+//! polygon is never shorter than the curve, so the budgets add up to at most
+//! `accuracy × polygon ≤ accuracy × perimeter × (polygon / perimeter)`, a ratio near 1.
+
+use crate::contour::Contour;
+use kurbo::{CubicBez, ParamCurve, ParamCurveArclen, ParamCurveDeriv, Point, Vec2};
+
+/// Default relative accuracy of every arc length in the crate: perimeters are exact to 1e-12
+/// relative with margin to spare (kurbo's per-segment error estimate is conservative).
+pub const DEFAULT_ACCURACY: f64 = 1e-13;
+
+/// Smallest accepted relative accuracy (below this, round-off dominates and time explodes).
+pub const MIN_ACCURACY: f64 = 1e-15;
+
+/// Largest accepted relative accuracy.
+pub const MAX_ACCURACY: f64 = 0.1;
+
+/// Length of the control polygon p0→p1→p2→p3, an upper bound on the arc length.
+pub fn control_polygon_len(c: &CubicBez) -> f64 {
+    (c.p1 - c.p0).hypot() + (c.p2 - c.p1).hypot() + (c.p3 - c.p2).hypot()
+}
+
+/// Arc length of one cubic to relative accuracy `accuracy`. Zero-length segments
+/// (all four points equal) are normal input and have length 0.
+pub fn segment_len(c: &CubicBez, accuracy: f64) -> f64 {
+    let poly = control_polygon_len(c);
+    if poly == 0.0 {
+        return 0.0;
+    }
+    c.arclen(accuracy * poly)
+}
+
+/// Cumulative arc lengths of a closed outline, and point/tangent lookup by arc length.
+#[derive(Debug, Clone)]
+pub struct ArcTable {
+    segs: Vec<CubicBez>,
+    /// `cum[i]` is the arc length from knot 0 to knot i; `cum[n]` is the perimeter.
+    cum: Vec<f64>,
+    accuracy: f64,
+}
+
+impl ArcTable {
+    /// Measures every segment of `contour` to relative `accuracy`.
+    pub fn new(contour: &Contour, accuracy: f64) -> Self {
+        let segs: Vec<CubicBez> = contour.segments().collect();
+        let mut cum = Vec::with_capacity(segs.len() + 1);
+        let mut total = 0.0;
+        cum.push(0.0);
+        for c in &segs {
+            total += segment_len(c, accuracy);
+            cum.push(total);
+        }
+        ArcTable { segs, cum, accuracy }
+    }
+
+    /// The perimeter.
+    pub fn total(&self) -> f64 {
+        *self.cum.last().unwrap_or(&0.0)
+    }
+
+    pub fn accuracy(&self) -> f64 {
+        self.accuracy
+    }
+
+    /// Arc length from knot 0 to the start of segment `i`.
+    pub fn segment_start(&self, i: usize) -> f64 {
+        self.cum[i.min(self.segs.len())]
+    }
+
+    pub fn segment(&self, i: usize) -> &CubicBez {
+        &self.segs[i]
+    }
+
+    pub fn segment_count(&self) -> usize {
+        self.segs.len()
+    }
+
+    /// Wraps any arc length into `[0, perimeter)`.
+    pub fn wrap(&self, s: f64) -> f64 {
+        let p = self.total();
+        if p <= 0.0 || !s.is_finite() {
+            return 0.0;
+        }
+        let w = s.rem_euclid(p);
+        if w >= p { 0.0 } else { w }
+    }
+
+    /// Segment index and curve parameter `t` at arc length `s` (wrapped) from knot 0.
+    pub fn locate(&self, s: f64) -> (usize, f64) {
+        let s = self.wrap(s);
+        let n = self.segs.len();
+        // Last i with cum[i] <= s, skipping zero-length segments.
+        let mut i = match self.cum[..n].binary_search_by(|c| c.partial_cmp(&s).unwrap_or(std::cmp::Ordering::Less)) {
+            Ok(mut k) => {
+                while k + 1 < n && self.cum[k + 1] <= s {
+                    k += 1;
+                }
+                k
+            }
+            Err(k) => k.saturating_sub(1),
+        };
+        while i + 1 < n && self.cum[i + 1] - self.cum[i] == 0.0 {
+            i += 1;
+        }
+        let seg = &self.segs[i];
+        let local = s - self.cum[i];
+        let poly = control_polygon_len(seg);
+        if poly == 0.0 {
+            return (i, 0.0);
+        }
+        let t = seg.inv_arclen(local, self.accuracy * poly);
+        (i, t.clamp(0.0, 1.0))
+    }
+
+    /// Point at arc length `s` (wrapped).
+    pub fn point_at(&self, s: f64) -> Point {
+        let (i, t) = self.locate(s);
+        self.segs[i].eval(t)
+    }
+
+    /// Point and unit tangent (direction of travel) at arc length `s` (wrapped).
+    pub fn frame_at(&self, s: f64) -> (Point, Vec2) {
+        let (i, t) = self.locate(s);
+        (self.segs[i].eval(t), unit_tangent(&self.segs[i], t))
+    }
+}
+
+/// Unit tangent of a cubic at `t`, well defined where the derivative vanishes (a handle that
+/// coincides with its anchor): then the direction is the limit of B'(t)/|B'(t)|, which is the
+/// second derivative's direction, or failing that the chord's.
+pub fn unit_tangent(c: &CubicBez, t: f64) -> Vec2 {
+    let d = c.deriv().eval(t).to_vec2();
+    let scale = control_polygon_len(c);
+    if d.hypot() > 1e-12 * scale.max(f64::MIN_POSITIVE) {
+        return d.normalize();
+    }
+    // Near an end with a collapsed handle: step inwards along the curve.
+    let dd = c.deriv().deriv().eval(t).to_vec2();
+    if dd.hypot() > 1e-12 * scale.max(f64::MIN_POSITIVE) {
+        // Leaving t=0: B'(h) ≈ h·B''(0). Arriving at t=1: B'(1−h) ≈ −h·B''(1).
+        let v = if t < 0.5 { dd } else { -dd };
+        return v.normalize();
+    }
+    let chord = c.p3 - c.p0;
+    if chord.hypot() > 0.0 {
+        chord.normalize()
+    } else {
+        Vec2::new(1.0, 0.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contour::Knot;
+
+    fn polygon(pts: &[(f64, f64)]) -> Contour {
+        Contour::new(pts.iter().map(|&p| Knot::corner(p.into())).collect(), 0).unwrap()
+    }
+
+    #[test]
+    fn polygon_perimeter_is_exact() {
+        let c = polygon(&[(0.0, 0.0), (3.0, 0.0), (3.0, 4.0)]);
+        let t = ArcTable::new(&c, DEFAULT_ACCURACY);
+        assert!((t.total() - 12.0).abs() < 1e-13, "wanted 12, got {}", t.total());
+    }
+
+    #[test]
+    fn point_at_walks_the_edges() {
+        let c = polygon(&[(0.0, 0.0), (3.0, 0.0), (3.0, 4.0)]);
+        let t = ArcTable::new(&c, DEFAULT_ACCURACY);
+        let p = t.point_at(5.0);
+        assert!((p - Point::new(3.0, 2.0)).hypot() < 1e-12, "got {p:?}");
+        let p = t.point_at(12.0 + 1.5);
+        assert!((p - Point::new(1.5, 0.0)).hypot() < 1e-12, "wrapped: got {p:?}");
+    }
+
+    #[test]
+    fn zero_length_segment_is_normal_input() {
+        let c = polygon(&[(0.0, 0.0), (0.0, 0.0), (1.0, 0.0), (1.0, 1.0)]);
+        let t = ArcTable::new(&c, DEFAULT_ACCURACY);
+        assert!((t.total() - (2.0 + 2f64.sqrt())).abs() < 1e-13);
+        let (_, tan) = t.frame_at(0.5);
+        assert!((tan - Vec2::new(1.0, 0.0)).hypot() < 1e-12, "got {tan:?}");
+    }
+}

@@ -1,0 +1,80 @@
+//! The one error type of the core. Every message is written for the person holding the
+//! mouse: it names the piece, the point or the segment, and says what to do.
+
+use std::fmt;
+
+/// Result alias used across the crate.
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// Everything that can go wrong with user input. The core never panics; it returns one of these.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Error {
+    /// The input is not shaped like the contract (missing field, wrong type). `detail` says where.
+    Shape { detail: String },
+    /// A coordinate is NaN or infinite.
+    NonFinite { piece: usize, point: usize, field: &'static str },
+    /// A path with fewer than two points.
+    TooFewPoints { piece: usize, count: usize },
+    /// An open path where a closed outline is needed.
+    OpenPath { piece: usize },
+    /// The outline has no length at all (every point at the same place).
+    ZeroLength { piece: usize },
+    /// The outline crosses itself; segment indices are 0-based (segment i runs from point i to i+1).
+    SelfIntersection { piece: usize, first: usize, second: usize },
+    /// Wrong number of paths or pieces for the operation.
+    PieceCount { wanted: &'static str, got: usize },
+    /// An option is out of its range or has the wrong type.
+    Option { name: &'static str, reason: String },
+    /// Two pieces that must be stitched have different perimeters.
+    PerimeterMismatch { a: f64, b: f64 },
+    /// Nothing sensible can be made with these options (connectors do not fit, etc.).
+    Infeasible { reason: String },
+}
+
+fn ordinal(piece: usize) -> String {
+    match piece {
+        0 => "first".into(),
+        1 => "second".into(),
+        2 => "third".into(),
+        n => format!("{}th", n + 1),
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::Shape { detail } => write!(f, "Invalid input: {detail}"),
+            Error::NonFinite { piece, point, field } => write!(
+                f,
+                "The {} path has a coordinate that is not a finite number (point {}, {}). Check the shape for broken points.",
+                ordinal(*piece), point + 1, field
+            ),
+            Error::TooFewPoints { piece, count } => write!(
+                f,
+                "The {} path has {} point{}; an outline needs at least 2.",
+                ordinal(*piece), count, if *count == 1 { "" } else { "s" }
+            ),
+            Error::OpenPath { piece } => write!(
+                f,
+                "The {} path is open. D-form pieces must be closed outlines: close the path (Object > Path > Join) and try again.",
+                ordinal(*piece)
+            ),
+            Error::ZeroLength { piece } => write!(f, "The {} path has zero length: all its points are in the same place.", ordinal(*piece)),
+            Error::SelfIntersection { piece, first, second } => write!(
+                f,
+                "The {} path crosses itself: segment {} (the one leaving point {}) intersects segment {} (the one leaving point {}). A D-form piece must be a simple outline.",
+                ordinal(*piece), first + 1, first + 1, second + 1, second + 1
+            ),
+            Error::PieceCount { wanted, got } => write!(f, "Expected {wanted}, got {got}."),
+            Error::Option { name, reason } => write!(f, "Option `{name}`: {reason}"),
+            Error::PerimeterMismatch { a, b } => write!(
+                f,
+                "The two pieces have different perimeters ({a} and {b}, {:.3e} relative). Normalize them first so they can be stitched edge to edge.",
+                (a - b).abs() / a.abs().max(b.abs())
+            ),
+            Error::Infeasible { reason } => write!(f, "{reason}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
