@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Installs whatever D-former's build and tests need and is missing; skips what is present.
+# Safe to run again. Used by demo.sh and test.sh; nothing else needs to be installed by hand.
+#
+#   scripts/setup.sh           toolchain for the core + Node deps (enough for the demo)
+#   scripts/setup.sh --all     also the test browser (Chromium) and Inkscape
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+want_all=0
+[ "${1:-}" = "--all" ] && want_all=1
+
+say() { printf '\033[1msetup:\033[0m %s\n' "$*"; }
+
+export PATH="$HOME/.cargo/bin:$PATH"
+command -v cargo >/dev/null || { echo "setup: cargo not found. Install Rust from rustup first." >&2; exit 1; }
+command -v node >/dev/null || { echo "setup: node not found. Install Node.js 20 or newer first." >&2; exit 1; }
+
+# 1. The WebAssembly target.
+if ! rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknown; then
+  say "adding the wasm32-unknown-unknown target"
+  rustup target add wasm32-unknown-unknown
+fi
+
+# 2. wasm-bindgen CLI, pinned to exactly the wasm-bindgen crate version in Cargo.lock.
+wbg_version=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
+[ -n "$wbg_version" ] || { echo "setup: cannot read the wasm-bindgen version from Cargo.lock" >&2; exit 1; }
+if [ "$(wasm-bindgen --version 2>/dev/null | awk '{print $2}')" != "$wbg_version" ]; then
+  say "installing wasm-bindgen-cli $wbg_version (a few minutes, once)"
+  cargo install wasm-bindgen-cli --version "=$wbg_version" --locked
+fi
+
+# 3. wasm-pack (it uses the wasm-bindgen above; wasm-opt is disabled in core/Cargo.toml).
+if ! command -v wasm-pack >/dev/null; then
+  say "installing wasm-pack (a few minutes, once)"
+  cargo install wasm-pack --locked
+fi
+
+# 4. Node dev dependencies (test browser driver, ESLint, TypeScript, Illustrator typings).
+if [ ! -d node_modules ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  say "installing Node dependencies"
+  npm ci --no-audit --no-fund --loglevel=error
+fi
+
+# 5. For the full test suite: Debian's Chromium (Playwright drives it) and Inkscape 1.x.
+if [ "$want_all" = 1 ]; then
+  missing=()
+  command -v chromium >/dev/null || missing+=(chromium)
+  command -v inkscape >/dev/null || missing+=(inkscape)
+  if [ ${#missing[@]} -gt 0 ]; then
+    say "installing ${missing[*]} from Debian"
+    sudo_cmd=""
+    [ "$(id -u)" = 0 ] || sudo_cmd="sudo"
+    $sudo_cmd apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  fi
+fi
+say "ready"

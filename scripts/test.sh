@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Every test: sets up what is missing (toolchain, Node deps, Chromium, Inkscape), then runs
+#   1. the Rust core's tests (ground truth, properties, fuzz-style proptests),
+#   2. the WebAssembly build, and the Node tests against it (core, connectors, 3D,
+#      Illustrator bridge in a simulated DOM, panel in headless Chromium),
+#   3. the Inkscape extension's tests, ending with a run of the real Inkscape.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh --all
+
+step() { printf '\n\033[1m== %s ==\033[0m\n' "$*"; }
+
+step "Rust core (cargo test)"
+cargo test --workspace --quiet
+
+step "WebAssembly build"
+bash scripts/build-wasm.sh
+
+step "Node tests (node --test)"
+node --test tests/
