@@ -29,14 +29,26 @@ pub enum Error {
     PerimeterMismatch { a: f64, b: f64 },
     /// Nothing sensible can be made with these options (connectors do not fit, etc.).
     Infeasible { reason: String },
+    /// SVG path data that cannot be read: 0-based character `position`, the text `near` it.
+    SvgSyntax { position: usize, near: String, problem: String },
 }
 
-fn ordinal(piece: usize) -> String {
+pub(crate) fn ordinal(piece: usize) -> String {
     match piece {
         0 => "first".into(),
         1 => "second".into(),
         2 => "third".into(),
-        n => format!("{}th", n + 1),
+        n => {
+            let k = n + 1;
+            let suffix = match (k % 10, k % 100) {
+                (_, 11..=13) => "th",
+                (1, _) => "st",
+                (2, _) => "nd",
+                (3, _) => "rd",
+                _ => "th",
+            };
+            format!("{k}{suffix}")
+        }
     }
 }
 
@@ -60,6 +72,11 @@ impl fmt::Display for Error {
                 ordinal(*piece)
             ),
             Error::ZeroLength { piece } => write!(f, "The {} path has zero length: all its points are in the same place.", ordinal(*piece)),
+            Error::SelfIntersection { piece, first, second } if first == second => write!(
+                f,
+                "The {} path crosses itself: segment {} (the one leaving point {}) loops over itself. A D-form piece must be a simple outline.",
+                ordinal(*piece), first + 1, first + 1
+            ),
             Error::SelfIntersection { piece, first, second } => write!(
                 f,
                 "The {} path crosses itself: segment {} (the one leaving point {}) intersects segment {} (the one leaving point {}). A D-form piece must be a simple outline.",
@@ -73,6 +90,11 @@ impl fmt::Display for Error {
                 (a - b).abs() / a.abs().max(b.abs())
             ),
             Error::Infeasible { reason } => write!(f, "{reason}"),
+            Error::SvgSyntax { position, near, problem } => write!(
+                f,
+                "Could not read the SVG path data at character {} (near \"{near}\"): {problem}.",
+                position + 1
+            ),
         }
     }
 }

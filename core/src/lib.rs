@@ -12,9 +12,13 @@
 
 pub mod api;
 pub mod arclen;
+pub mod connect;
 pub mod contour;
 pub mod error;
 pub mod measure;
+pub mod normalize;
+pub mod simulate;
+pub mod svg;
 pub mod validate;
 
 #[cfg(target_arch = "wasm32")]

@@ -2,7 +2,12 @@
 //! [`Error`] with a user-facing message. The WASM binding (`wasm.rs`) and the `dformer` CLI are
 //! thin shells around these functions; no kurbo type crosses this boundary.
 
+pub mod connect;
+pub mod normalize;
 pub mod path;
+pub mod simulate;
+pub mod svg;
+pub mod value;
 
 use crate::arclen::{DEFAULT_ACCURACY, MAX_ACCURACY, MIN_ACCURACY};
 use crate::error::{Error, Result};

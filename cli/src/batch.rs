@@ -1,0 +1,239 @@
+//! `dformer measure|normalize|connect FILE.svg`: the core applied to the shapes of an SVG file,
+//! in the root's user space (every transform applied), with lengths shown and entered in the
+//! document's unit. Pieces are written back in place (id, style and transform kept).
+
+use crate::laser::{self, Group};
+use crate::splice::{escape, inner_range, tag_prefix, Edits};
+use crate::svgdoc::{Shape, SvgFile, INKSCAPE_NS};
+use dformer::api::{self, connect::ConnectOptionsDto, path::PathDto};
+use kurbo::{Affine, Point};
+use serde_json::{json, Value};
+
+/// Geometry attributes a shape loses when rewritten as a `<path>`.
+const GEOMETRY: &[&str] = &["x", "y", "width", "height", "rx", "ry", "cx", "cy", "r", "points", "x1", "y1", "x2", "y2", "d"];
+const SODIPODI_NS: &str = "http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd";
+
+/// Maps anchors and handles through an affine map (exact for Bézier curves).
+pub fn map_path(path: &PathDto, a: Affine) -> PathDto {
+    let m = |p: [f64; 2]| {
+        let q = a * Point::new(p[0], p[1]);
+        [q.x, q.y]
+    };
+    let mut out = path.clone();
+    for p in &mut out.points {
+        p.anchor = m(p.anchor);
+        p.left = p.left.map(m);
+        p.right = p.right.map(m);
+    }
+    out
+}
+
+/// The shapes to work on: those named by `ids` (in that order), or every shape in the file.
+pub fn pick<'a, 'i>(file: &'a SvgFile<'i>, ids: &[String], min: usize, max: Option<usize>) -> Result<Vec<Shape<'a, 'i>>, String> {
+    let all = file.shapes()?;
+    let chosen = if ids.is_empty() {
+        all
+    } else {
+        ids.iter()
+            .map(|id| {
+                all.iter().find(|s| s.node.attribute("id") == Some(id.as_str())).cloned().ok_or_else(|| format!("no shape with id \"{id}\" in the file"))
+            })
+            .collect::<Result<Vec<_>, _>>()?
+    };
+    let n = chosen.len();
+    if n < min || max.is_some_and(|m| n > m) {
+        let want = match max {
+            Some(m) if m == min => format!("exactly {min}"),
+            _ => format!("at least {min}"),
+        };
+        let names: Vec<&str> = chosen.iter().map(|s| s.name.as_str()).collect();
+        return Err(format!("{want} shapes are needed, found {n} ({}); choose them with --id", names.join(", ")));
+    }
+    Ok(chosen)
+}
+
+/// One core path per shape, in root user units; a compound shape is an error naming it.
+pub fn read(shapes: &[Shape]) -> Result<Vec<PathDto>, String> {
+    shapes
+        .iter()
+        .map(|s| {
+            let subpaths = api::svg::path_from_svg(&s.d).map_err(|e| format!("{}: {e}", s.name))?;
+            match subpaths.as_slice() {
+                [one] => Ok(map_path(one, s.ctm)),
+                _ => Err(format!(
+                    "{} has {} subpaths; a D-form piece must be one outline (break it apart first)",
+                    s.name,
+                    subpaths.len()
+                )),
+            }
+        })
+        .collect()
+}
+
+/// Path data of a root-user-space path in the shape's local coordinates.
+fn local_d(shape: &Shape, path: &PathDto) -> Result<String, String> {
+    let inverse = if shape.ctm.determinant().abs() > 0.0 { shape.ctm.inverse() } else {
+        return Err(format!("{} has a transform that flattens it to nothing", shape.name));
+    };
+    api::svg::path_to_svg(&map_path(path, inverse)).map_err(|e| e.to_string())
+}
+
+/// Gives the shape a new outline: a `<path>`'s `d` is replaced (Inkscape's sodipodi shape data
+/// dropped, so Inkscape does not regenerate the old shape); other shapes become `<path>`.
+fn replace_outline(source: &str, shape: &Shape, path: &PathDto, edits: &mut Edits) -> Result<(), String> {
+    let node = shape.node;
+    if node.attribute((INKSCAPE_NS, "path-effect")).is_some() || node.attribute((INKSCAPE_NS, "original-d")).is_some() {
+        return Err(format!("{} has a live path effect; convert it with Object to Path first", shape.name));
+    }
+    let d = escape(&local_d(shape, path)?);
+    if node.tag_name().name() == "path" {
+        for attr in node.attributes() {
+            if attr.namespace() == Some(SODIPODI_NS) {
+                edits.replace(attr.range(), String::new());
+            } else if attr.namespace().is_none() && attr.name() == "d" {
+                edits.replace(attr.range_value(), d.clone());
+            }
+        }
+        return Ok(());
+    }
+    let prefix = tag_prefix(source, node);
+    let mut xml = format!("<{prefix}path");
+    for attr in node.attributes() {
+        let geometry = attr.namespace().is_none() && GEOMETRY.contains(&attr.name());
+        if !geometry && attr.namespace() != Some(SODIPODI_NS) {
+            xml.push(' ');
+            xml.push_str(&source[attr.range()]);
+        }
+    }
+    xml.push_str(&format!(" d=\"{d}\""));
+    match inner_range(node) {
+        Some(inner) => xml.push_str(&format!(">{}</{prefix}path>", &source[inner])),
+        None => xml.push_str("/>"),
+    }
+    edits.replace(node.range(), xml);
+    Ok(())
+}
+
+/// `dformer measure`: one line (or JSON object) per shape.
+pub fn measure(file: &SvgFile, ids: &[String], as_json: bool) -> Result<String, String> {
+    let shapes = pick(file, ids, 1, None)?;
+    let paths = read(&shapes)?;
+    let unit = &file.scale.unit;
+    let mut rows = Vec::new();
+    let mut text = String::new();
+    for (s, p) in shapes.iter().zip(&paths) {
+        let m = api::measure(p, None).map_err(|e| format!("{}: {e}", s.name))?;
+        let perimeter = file.scale.to_unit(m.perimeter);
+        let area = m.area * file.scale.to_unit(1.0).powi(2);
+        // The core reports orientation for y-up; SVG user space is y-down.
+        let screen = if m.orientation == "ccw" { "clockwise" } else { "counter-clockwise" };
+        text.push_str(&format!("{}\tperimeter {perimeter:.6} {unit}\tarea {area:.6} {unit}²\t{screen} on screen\n", s.name));
+        rows.push(json!({ "id": s.key, "perimeter": perimeter, "area": area, "unit": unit, "direction": screen }));
+    }
+    Ok(if as_json { format!("{}\n", Value::Array(rows)) } else { text })
+}
+
+/// `dformer normalize`: every chosen shape scaled to the common perimeter, in place.
+pub fn normalize(source: &str, file: &SvgFile, ids: &[String], target: &str, pivot: &str) -> Result<(String, String), String> {
+    let shapes = pick(file, ids, 2, None)?;
+    let paths = read(&shapes)?;
+    let target = match target {
+        "largest" | "smallest" | "mean" | "first" => json!(target),
+        length => json!(file.scale.parse_user(length).map_err(|e| format!("--target: {e}"))?),
+    };
+    let options = serde_json::from_value(json!({ "target": target, "pivot": pivot })).map_err(|e| e.to_string())?;
+    let result = api::normalize::normalize(&paths, &options).map_err(|e| e.to_string())?;
+    let mut edits = Edits::default();
+    for (s, p) in shapes.iter().zip(&result.paths) {
+        replace_outline(source, s, p, &mut edits)?;
+    }
+    let report = format!(
+        "{} shapes normalized to perimeter {:.6} {} (scales {})\n",
+        shapes.len(),
+        file.scale.to_unit(result.perimeter),
+        file.scale.unit,
+        result.scales.iter().map(|k| format!("{k:.6}")).collect::<Vec<_>>().join(", ")
+    );
+    Ok((edits.apply(source)?, report))
+}
+
+/// Options of `dformer connect` as given on the command line (lengths still as text).
+pub struct ConnectArgs {
+    pub kind: String,
+    pub count: Option<f64>,
+    pub pitch: Option<String>,
+    pub slide: Option<f64>,
+    pub start: Option<[String; 2]>,
+    pub inset: Option<String>,
+    pub diameter: Option<String>,
+    pub length: Option<String>,
+    pub angle: Option<f64>,
+    pub invert: bool,
+    pub kerf: Option<String>,
+    pub label_size: Option<String>,
+    pub labels: bool,
+}
+
+/// `dformer connect`: paired connectors on the two chosen shapes, written as laser layers.
+pub fn connect(source: &str, file: &SvgFile, ids: &[String], a: &ConnectArgs) -> Result<(String, String), String> {
+    let shapes = pick(file, ids, 2, Some(2))?;
+    let paths = read(&shapes)?;
+    let len = |name: &str, v: &Option<String>| v.as_deref().map(|t| file.scale.parse_user(t).map_err(|e| format!("--{name}: {e}"))).transpose();
+    let start = match &a.start {
+        Some([sa, sb]) => Some([file.scale.parse_user(sa)?, file.scale.parse_user(sb)?]),
+        None => None,
+    };
+    let options = ConnectOptionsDto {
+        kind: Some(a.kind.clone()),
+        count: a.count,
+        pitch: len("pitch", &a.pitch)?,
+        slide: a.slide,
+        start,
+        inset: len("inset", &a.inset)?,
+        diameter: len("diameter", &a.diameter)?,
+        length: len("length", &a.length)?,
+        angle: a.angle,
+        invert: Some(a.invert),
+        kerf: len("kerf", &a.kerf)?,
+        accuracy: None,
+    };
+    let result = api::connect::connect(&paths, &options).map_err(|e| e.to_string())?;
+    let hairline = laser::HAIRLINE_PX / file.scale.px_per_user;
+    let font = len("label-size", &a.label_size)?.unwrap_or(0.4 * result.pitch);
+    let mut edits = Edits::default();
+    let mut groups = Vec::new();
+    for (i, (s, piece)) in shapes.iter().zip(&result.pieces).enumerate() {
+        let title = format!("Piece {} {}", ["A", "B"][i], s.name);
+        if a.kind != "stitch" {
+            replace_outline(source, s, &piece.outline, &mut edits)?;
+        }
+        let svg_of = |paths: Vec<&PathDto>| paths.into_iter().map(|p| api::svg::path_to_svg(p).map_err(|e| e.to_string())).collect::<Result<Vec<_>, _>>();
+        let holes = svg_of(piece.holes.iter().map(|h| &h.path).collect())?;
+        let marks = svg_of(piece.marks.iter().collect())?;
+        if !holes.is_empty() {
+            let body = laser::paths("cut", &format!("dformer-hole-{}", s.key), &holes, hairline);
+            groups.push(Group { layer: "cut", piece_key: s.key.clone(), title: format!("{title}: holes"), body });
+        }
+        if !marks.is_empty() {
+            let body = laser::paths("score", &format!("dformer-mark-{}", s.key), &marks, hairline);
+            groups.push(Group { layer: "score", piece_key: s.key.clone(), title: format!("{title}: start"), body });
+        }
+        if a.labels {
+            let items: Vec<_> = piece.labels.iter().map(|l| (l.text.clone(), l.at, l.angle)).collect();
+            let body = laser::labels(&format!("dformer-label-{}", s.key), &items, font);
+            groups.push(Group { layer: "engrave", piece_key: s.key.clone(), title: format!("{title}: numbers"), body });
+        }
+    }
+    laser::write(source, file.doc.root_element(), &groups, &mut edits)?;
+    let mut report = format!(
+        "{} {} connectors per piece, {:.6} {} apart\n",
+        result.count,
+        a.kind,
+        file.scale.to_unit(result.pitch),
+        file.scale.unit
+    );
+    for w in &result.warnings {
+        report.push_str(&format!("warning: {w}\n"));
+    }
+    Ok((edits.apply(source)?, report))
+}

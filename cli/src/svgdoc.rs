@@ -1,0 +1,196 @@
+//! Reading an SVG file for batch use: the shapes that can be D-form pieces, their path data in
+//! local coordinates and their transform to the root's user space (viewBox units).
+//!
+//! Scope (stated in `inkscape-extension/README.md`): `path`, `rect` (with `rx`/`ry`), `circle`,
+//! `ellipse`, `polygon` (and `polyline`/`line`, which the core reports as open); `transform`
+//! attributes on the shape and every ancestor group, composed. Not followed: `<use>` clones,
+//! nested `<svg>` viewports, CSS `transform` properties, shapes in `<defs>`, masks, clips,
+//! markers, patterns and symbols, and D-former's own output layers (ids starting `dformer-`).
+
+use crate::units::{length_px, Scale};
+use kurbo::Affine;
+use roxmltree::{Document, Node};
+use std::fmt::Write;
+
+pub const SVG_NS: &str = "http://www.w3.org/2000/svg";
+pub const INKSCAPE_NS: &str = "http://www.inkscape.org/namespaces/inkscape";
+/// Id prefix of everything D-former writes.
+pub const OWN_PREFIX: &str = "dformer-";
+
+/// Elements whose content is never drawn directly.
+const NOT_DRAWN: &[&str] = &["defs", "clipPath", "mask", "marker", "pattern", "symbol", "metadata", "title", "desc", "style", "script", "foreignObject", "use", "svg", "image", "text"];
+const SHAPES: &[&str] = &["path", "rect", "circle", "ellipse", "polygon", "polyline", "line"];
+
+/// One shape that may be a piece.
+#[derive(Debug, Clone)]
+pub struct Shape<'a, 'input> {
+    pub node: Node<'a, 'input>,
+    /// How messages name it: `#id`, or `<rect> number 3` without an id.
+    pub name: String,
+    /// Its id, or a stable stand-in (`shape3`) for D-former's group ids.
+    pub key: String,
+    /// Local coordinates → root user space.
+    pub ctm: Affine,
+    /// Path data in local coordinates.
+    pub d: String,
+}
+
+/// The parsed SVG text plus what the commands need from the root.
+pub struct SvgFile<'input> {
+    pub doc: Document<'input>,
+    pub scale: Scale,
+}
+
+fn number(n: Node, name: &str, what: &str) -> Result<f64, String> {
+    match n.attribute(name) {
+        None => Ok(0.0),
+        Some(v) => length_px(v).ok_or_else(|| format!("{what}: attribute {name}=\"{v}\" is not an absolute length")),
+    }
+}
+
+fn transform_of(n: Node) -> Result<Affine, String> {
+    match n.attribute("transform") {
+        None => Ok(Affine::IDENTITY),
+        Some(t) => {
+            let m: svgtypes::Transform = t.parse().map_err(|e| format!("transform=\"{t}\" cannot be read ({e})"))?;
+            Ok(Affine::new([m.a, m.b, m.c, m.d, m.e, m.f]))
+        }
+    }
+}
+
+/// Path data of a basic shape, in its local coordinates (SVG 1.1 §9 equivalent paths).
+fn shape_path(n: Node, what: &str) -> Result<String, String> {
+    let g = |name: &str| number(n, name, what);
+    let mut d = String::new();
+    match n.tag_name().name() {
+        "path" => return Ok(n.attribute("d").unwrap_or("").to_string()),
+        "rect" => {
+            let (x, y, w, h) = (g("x")?, g("y")?, g("width")?, g("height")?);
+            if w <= 0.0 || h <= 0.0 {
+                return Err(format!("{what} has zero or negative width or height"));
+            }
+            let (rx0, ry0) = (n.attribute("rx").map(|_| g("rx")).transpose()?, n.attribute("ry").map(|_| g("ry")).transpose()?);
+            // A missing radius takes the other's value; both are clamped to half the side (§9.2).
+            let rx = rx0.or(ry0).unwrap_or(0.0).clamp(0.0, w / 2.0);
+            let ry = ry0.or(rx0).unwrap_or(0.0).clamp(0.0, h / 2.0);
+            if rx > 0.0 && ry > 0.0 {
+                let _ = write!(
+                    d,
+                    "M {} {y} H {} A {rx} {ry} 0 0 1 {} {} V {} A {rx} {ry} 0 0 1 {} {} H {} A {rx} {ry} 0 0 1 {x} {} V {} A {rx} {ry} 0 0 1 {} {y} Z",
+                    x + rx, x + w - rx, x + w, y + ry, y + h - ry, x + w - rx, y + h, x + rx, y + h - ry, y + ry, x + rx
+                );
+            } else {
+                let _ = write!(d, "M {x} {y} H {} V {} H {x} Z", x + w, y + h);
+            }
+        }
+        "circle" | "ellipse" => {
+            let (cx, cy) = (g("cx")?, g("cy")?);
+            let (rx, ry) = if n.tag_name().name() == "circle" { (g("r")?, g("r")?) } else { (g("rx")?, g("ry")?) };
+            if rx <= 0.0 || ry <= 0.0 {
+                return Err(format!("{what} has a zero or negative radius"));
+            }
+            let _ = write!(
+                d,
+                "M {} {cy} A {rx} {ry} 0 0 1 {cx} {} A {rx} {ry} 0 0 1 {} {cy} A {rx} {ry} 0 0 1 {cx} {} A {rx} {ry} 0 0 1 {} {cy} Z",
+                cx + rx, cy + ry, cx - rx, cy - ry, cx + rx
+            );
+        }
+        "polygon" | "polyline" => {
+            for (i, (x, y)) in svgtypes::PointsParser::from(n.attribute("points").unwrap_or("")).enumerate() {
+                let _ = write!(d, "{} {x} {y} ", if i == 0 { "M" } else { "L" });
+            }
+            if n.tag_name().name() == "polygon" && !d.is_empty() {
+                d.push('Z');
+            }
+        }
+        "line" => {
+            let _ = write!(d, "M {} {} L {} {}", g("x1")?, g("y1")?, g("x2")?, g("y2")?);
+        }
+        other => return Err(format!("{what}: <{other}> is not a shape D-former reads")),
+    }
+    Ok(d)
+}
+
+impl<'input> SvgFile<'input> {
+    /// Parses the text; the root must be an SVG `<svg>` element.
+    pub fn parse(text: &'input str, unit: Option<&str>) -> Result<Self, String> {
+        let options = roxmltree::ParsingOptions { allow_dtd: true, ..Default::default() };
+        let doc = Document::parse_with_options(text, options).map_err(|e| format!("not a readable SVG/XML file: {e}"))?;
+        let root = doc.root_element();
+        if root.tag_name().name() != "svg" || root.tag_name().namespace() != Some(SVG_NS) {
+            return Err("the root element is not an SVG <svg> element (xmlns=\"http://www.w3.org/2000/svg\")".into());
+        }
+        let doc_units = root
+            .children()
+            .find(|c| c.tag_name().name() == "namedview")
+            .and_then(|nv| nv.attribute((INKSCAPE_NS, "document-units")));
+        let scale = Scale::new(root.attribute("width"), root.attribute("viewBox"), doc_units, unit)?;
+        Ok(SvgFile { doc, scale })
+    }
+
+    /// Every drawable shape in document order, outside D-former's own output.
+    pub fn shapes(&self) -> Result<Vec<Shape<'_, 'input>>, String> {
+        let mut out = Vec::new();
+        let root = self.doc.root_element();
+        let mut counter = 0usize;
+        walk(root, transform_of(root)?, &mut out, &mut counter)?;
+        Ok(out)
+    }
+}
+
+fn walk<'a, 'input>(node: Node<'a, 'input>, ctm: Affine, out: &mut Vec<Shape<'a, 'input>>, counter: &mut usize) -> Result<(), String> {
+    for child in node.children().filter(|c| c.is_element() && c.tag_name().namespace() == Some(SVG_NS)) {
+        let tag = child.tag_name().name();
+        if NOT_DRAWN.contains(&tag) || child.attribute("id").is_some_and(|id| id.starts_with(OWN_PREFIX)) {
+            continue;
+        }
+        let what = match child.attribute("id") {
+            Some(id) => format!("#{id}"),
+            None => format!("<{tag}> number {}", *counter + 1),
+        };
+        let local = ctm * transform_of(child).map_err(|e| format!("{what}: {e}"))?;
+        if SHAPES.contains(&tag) {
+            *counter += 1;
+            let key = child.attribute("id").map(str::to_string).unwrap_or_else(|| format!("shape{}", *counter));
+            out.push(Shape { node: child, d: shape_path(child, &what)?, name: what, key, ctm: local });
+        } else {
+            walk(child, local, out, counter)?;
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nested_group_transforms_compose_outer_first() {
+        let text = r#"<svg xmlns="http://www.w3.org/2000/svg" width="100mm" viewBox="0 0 100 100">
+            <g transform="translate(10 0)"><g transform="scale(2)"><rect id="r" width="1" height="1"/></g></g>
+            <defs><rect id="hidden" width="1" height="1"/></defs></svg>"#;
+        let file = SvgFile::parse(text, None).unwrap();
+        let shapes = file.shapes().unwrap();
+        assert_eq!(shapes.len(), 1, "wanted only the drawn rect, got {:?}", shapes.iter().map(|s| &s.name).collect::<Vec<_>>());
+        let p = shapes[0].ctm * kurbo::Point::new(1.0, 1.0);
+        assert_eq!((p.x, p.y), (12.0, 2.0), "wanted scale then translate: (12, 2), got {p:?}");
+        assert_eq!(file.scale.unit, "mm");
+    }
+
+    #[test]
+    fn rect_radii_follow_the_svg_rules() {
+        let text = r#"<svg xmlns="http://www.w3.org/2000/svg"><rect x="0" y="0" width="10" height="4" rx="3"/></svg>"#;
+        let file = SvgFile::parse(text, None).unwrap();
+        let d = &file.shapes().unwrap()[0].d;
+        // ry takes rx's value (3) and is clamped to half the height (2); rx stays 3.
+        assert!(d.contains("A 3 2 0 0 1"), "wanted radii 3 and 2 in {d}");
+    }
+
+    #[test]
+    fn bad_files_and_shapes_are_named() {
+        assert!(SvgFile::parse("<html/>", None).err().unwrap_or_default().contains("not an SVG"));
+        let text = r#"<svg xmlns="http://www.w3.org/2000/svg"><circle id="c" r="0"/></svg>"#;
+        let err = SvgFile::parse(text, None).unwrap().shapes().unwrap_err();
+        assert!(err.contains("#c") && err.contains("radius"), "got {err}");
+    }
+}

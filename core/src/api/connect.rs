@@ -1,0 +1,132 @@
+//! `connect(pieces, options)` of the contract: DTOs and their conversions.
+//! The geometry and every option's meaning and default are in [`crate::connect`].
+
+use super::path::{arr, PathDto};
+use crate::connect::{self, options::RawOptions, Connection, Hole, Label, PieceOut};
+use crate::error::{Error, Result};
+use crate::validate;
+use serde::{Deserialize, Serialize};
+
+/// `options` of `connect`; every field optional (see [`crate::connect::options`]).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct ConnectOptionsDto {
+    #[serde(default)]
+    pub kind: Option<String>,
+    #[serde(default)]
+    pub count: Option<f64>,
+    #[serde(default)]
+    pub pitch: Option<f64>,
+    #[serde(default)]
+    pub slide: Option<f64>,
+    #[serde(default)]
+    pub start: Option<[f64; 2]>,
+    #[serde(default)]
+    pub inset: Option<f64>,
+    #[serde(default)]
+    pub diameter: Option<f64>,
+    #[serde(default)]
+    pub length: Option<f64>,
+    #[serde(default)]
+    pub angle: Option<f64>,
+    #[serde(default)]
+    pub invert: Option<bool>,
+    #[serde(default)]
+    pub kerf: Option<f64>,
+    #[serde(default)]
+    pub accuracy: Option<f64>,
+}
+
+impl From<&ConnectOptionsDto> for RawOptions {
+    fn from(o: &ConnectOptionsDto) -> Self {
+        RawOptions {
+            kind: o.kind.clone(),
+            count: o.count,
+            pitch: o.pitch,
+            slide: o.slide,
+            start: o.start,
+            inset: o.inset,
+            diameter: o.diameter,
+            length: o.length,
+            angle: o.angle,
+            invert: o.invert,
+            kerf: o.kerf,
+            accuracy: o.accuracy,
+        }
+    }
+}
+
+/// `{ center: [x, y], diameter, path }`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct HoleDto {
+    pub center: [f64; 2],
+    pub diameter: f64,
+    pub path: PathDto,
+}
+
+impl From<&Hole> for HoleDto {
+    fn from(h: &Hole) -> Self {
+        HoleDto { center: arr(h.center), diameter: h.diameter, path: PathDto::from(&h.path) }
+    }
+}
+
+/// `{ text, at: [x, y], angle }`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LabelDto {
+    pub text: String,
+    pub at: [f64; 2],
+    pub angle: f64,
+}
+
+impl From<&Label> for LabelDto {
+    fn from(l: &Label) -> Self {
+        LabelDto { text: l.text.clone(), at: arr(l.at), angle: l.angle }
+    }
+}
+
+/// `PieceResult = { outline, holes, labels, marks }`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PieceResultDto {
+    pub outline: PathDto,
+    pub holes: Vec<HoleDto>,
+    pub labels: Vec<LabelDto>,
+    pub marks: Vec<PathDto>,
+}
+
+impl PieceResultDto {
+    /// `input` is returned as the outline, point for point, when the edge is unchanged.
+    fn new(p: &PieceOut, input: &PathDto) -> Self {
+        PieceResultDto {
+            outline: p.outline.as_ref().map(PathDto::from).unwrap_or_else(|| input.clone()),
+            holes: p.holes.iter().map(HoleDto::from).collect(),
+            labels: p.labels.iter().map(LabelDto::from).collect(),
+            marks: p.marks.iter().map(PathDto::from).collect(),
+        }
+    }
+}
+
+/// `{ count, pitch, pieces: [PieceResult, PieceResult], warnings }`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ConnectDto {
+    pub count: usize,
+    pub pitch: f64,
+    pub pieces: [PieceResultDto; 2],
+    pub warnings: Vec<String>,
+}
+
+/// `connect(pieces, options)`: exactly two closed, simple pieces of equal perimeter.
+pub fn connect(pieces: &[PathDto], options: &ConnectOptionsDto) -> Result<ConnectDto> {
+    if pieces.len() != 2 {
+        return Err(Error::PieceCount { wanted: "exactly two pieces to connect", got: pieces.len() });
+    }
+    let a = pieces[0].to_contour(0)?;
+    let b = pieces[1].to_contour(1)?;
+    validate::check_outline(&a, 0)?;
+    validate::check_outline(&b, 1)?;
+    let c: Connection = connect::connect(&a, &b, &RawOptions::from(options))?;
+    Ok(ConnectDto {
+        count: c.count,
+        pitch: c.pitch,
+        pieces: [PieceResultDto::new(&c.pieces[0], &pieces[0]), PieceResultDto::new(&c.pieces[1], &pieces[1])],
+        warnings: c.warnings,
+    })
+}

@@ -1,0 +1,104 @@
+//! `simulate(pieces, options)` of the contract: DTOs and their conversions. The method and
+//! every figure's meaning are in [`crate::simulate`].
+
+use super::path::PathDto;
+use crate::error::{Error, Result};
+use crate::simulate::{self, SimulateOptions, Simulation, Stats};
+use serde::{Deserialize, Serialize};
+
+/// `options` of `simulate`; every field optional.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct SimulateOptionsDto {
+    /// Arc length by which B's start is shifted along B (B walked clockwise), input units.
+    #[serde(default)]
+    pub offset: Option<f64>,
+    /// Number of seam vertices (default 256).
+    #[serde(default)]
+    pub resolution: Option<f64>,
+    /// A previous result's `vertices`, to start from (live sliders).
+    #[serde(default)]
+    pub warm: Option<Vec<[f64; 3]>>,
+    /// Cap on solver steps (default 200).
+    #[serde(default)]
+    pub max_iterations: Option<f64>,
+}
+
+/// `stats` of the result (see [`crate::simulate::Stats`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct StatsDto {
+    pub max_strain: f64,
+    pub mean_strain: f64,
+    pub seam_gap: f64,
+    pub area_error: f64,
+    pub angle_defect_sum: f64,
+    pub interior_defect_sum: f64,
+    pub reflex_edges: usize,
+    pub volume: f64,
+    pub area: f64,
+    pub iterations: usize,
+    pub flips: usize,
+    pub converged: bool,
+    pub ms: f64,
+}
+
+impl From<&Stats> for StatsDto {
+    fn from(s: &Stats) -> Self {
+        StatsDto {
+            max_strain: s.max_strain,
+            mean_strain: s.mean_strain,
+            seam_gap: s.seam_gap,
+            area_error: s.area_error,
+            angle_defect_sum: s.angle_defect_sum,
+            interior_defect_sum: s.interior_defect_sum,
+            reflex_edges: s.reflex_edges,
+            volume: s.volume,
+            area: s.area,
+            iterations: s.iterations,
+            flips: s.flips,
+            converged: s.converged,
+            ms: s.ms,
+        }
+    }
+}
+
+/// `{ vertices, triangles, piece, seam, stats }`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SimulateDto {
+    pub vertices: Vec<[f64; 3]>,
+    pub triangles: Vec<[usize; 3]>,
+    pub piece: Vec<u8>,
+    pub seam: Vec<usize>,
+    pub stats: StatsDto,
+}
+
+impl From<&Simulation> for SimulateDto {
+    fn from(s: &Simulation) -> Self {
+        SimulateDto {
+            vertices: s.vertices.clone(),
+            triangles: s.triangles.clone(),
+            piece: s.piece.clone(),
+            seam: s.seam.clone(),
+            stats: StatsDto::from(&s.stats),
+        }
+    }
+}
+
+impl SimulateOptionsDto {
+    /// Checks the options (ranges, finiteness) and fills defaults.
+    pub fn check(&self) -> Result<SimulateOptions> {
+        SimulateOptions::new(self.offset, self.resolution, self.warm.clone(), self.max_iterations)
+    }
+}
+
+/// `simulate(pieces, options)`: the 3D D-form of two closed pieces of equal perimeter.
+pub fn simulate(pieces: &[PathDto], options: &SimulateOptionsDto) -> Result<SimulateDto> {
+    if pieces.len() != 2 {
+        return Err(Error::PieceCount { wanted: "exactly two pieces to simulate", got: pieces.len() });
+    }
+    let a = pieces[0].to_contour(0)?;
+    let b = pieces[1].to_contour(1)?;
+    let options = options.check()?;
+    Ok(SimulateDto::from(&simulate::simulate(&a, &b, &options)?))
+}

@@ -1,0 +1,38 @@
+//! Stitch holes: one circle per connector, `inset` from the edge along the normal.
+//!
+//! The centre of connector k's hole is `B(s_k) + inset·n(s_k)`, with `B(s_k)` the point at arc
+//! length `s_k` and `n` the unit normal pointing into the piece (out of it with `invert`). On a
+//! straight or convex stretch its distance to the edge is exactly `inset`.
+//!
+//! Kerf: a laser burns away half its cut width on each side of the path, so a hole drawn with
+//! diameter `d − kerf` comes out with diameter `d`. Holes are drawn that much smaller, and
+//! `diameter` in the result is the drawn diameter.
+
+use super::circle::circle;
+use super::options::Settings;
+use super::piece::Walked;
+use super::spacing::Station;
+use super::Hole;
+use kurbo::Point;
+
+/// +1 when holes go inside the piece, −1 with `invert`.
+pub fn side(set: &Settings) -> f64 {
+    if set.invert { -1.0 } else { 1.0 }
+}
+
+/// Hole centres of one piece, in connector order.
+pub fn centers(piece: &Walked, stations: &[Station], set: &Settings) -> Vec<Point> {
+    let depth = side(set) * set.inset;
+    stations.iter().map(|st| st.point + piece.inward(st.tangent) * depth).collect()
+}
+
+/// The drawn holes (see the module comment for kerf). Holes run against the drawing direction
+/// of the piece (`piece_ccw`), so a compound path of outline and holes fills correctly under
+/// both fill rules.
+pub fn holes(centers: &[Point], set: &Settings, piece_ccw: bool) -> Vec<Hole> {
+    let diameter = set.diameter - set.kerf;
+    centers
+        .iter()
+        .map(|&c| Hole { center: c, diameter, path: circle(c, 0.5 * diameter, !piece_ccw) })
+        .collect()
+}

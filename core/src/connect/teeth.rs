@@ -1,0 +1,91 @@
+//! Teeth: interlocking crenellations built into both outlines.
+//!
+//! Picture the seam flattened: `u` is arc length along the walk, `v` the distance out of the
+//! piece along the outward normal. The original edge is `v = 0`, the line the two pieces meet
+//! on. A piece's new edge is a trapezoid wave: tooth tops at `v = +L/2`, gap bottoms at
+//! `v = −L/2`, flanks at angle θ to the edge, every tooth and every gap `p/2` wide where it
+//! crosses `v = 0`. Tooth centres are at the connectors `s_k` on A and half a pitch later on B
+//! (swapped by `invert`). Since B is walked clockwise, B's outward normal is A's inward one once
+//! the pieces are joined face to face, so B's wave is A's mirrored, `v_B(u) = −v_A(u)`: A's tooth
+//! intervals are exactly B's gap intervals.
+//!
+//! Kerf: each piece's edge is moved out by `κ = kerf/2` (the laser removes that much on each
+//! side of its path): tops and bottoms by κ, each flank by κ along its own normal, which moves
+//! its crossing of `v = 0` by `κ / sin θ` along the edge. Teeth come out `L/2 + κ` high and
+//! `p/2 + 2κ/sin θ` wide at the seam line before cutting, and exact after.
+
+use super::edge::Builder;
+use super::options::Settings;
+use super::piece::Walked;
+use super::spacing::locate_many;
+use crate::contour::Contour;
+use crate::error::{Error, Result};
+use kurbo::{CubicBez, Point};
+
+/// The profile of one tooth in `(u, v)`: rising flank bottom and top, falling flank top and
+/// bottom, relative to the tooth centre.
+fn tooth(set: &Settings, pitch: f64) -> [(f64, f64); 4] {
+    let k = 0.5 * set.kerf;
+    let (sin, cot) = (set.angle.sin(), set.angle.cos() / set.angle.sin());
+    let half = 0.25 * pitch + k / sin;
+    let (top, bottom) = (0.5 * set.length + k, -0.5 * set.length + k);
+    [(-half + bottom * cot, bottom), (-half + top * cot, top), (half - top * cot, top), (half - bottom * cot, bottom)]
+}
+
+/// Checks that tooth tops and gap bottoms keep a positive width.
+pub fn check(set: &Settings) -> Result<()> {
+    let t = tooth(set, set.pitch);
+    let top = t[2].0 - t[1].0;
+    let gap = set.pitch - (t[3].0 - t[0].0);
+    if top <= 0.0 || gap <= 0.0 {
+        return Err(Error::Infeasible {
+            reason: format!(
+                "Teeth of length {} with {}° flanks do not fit a pitch of {}: the flanks meet. Use fewer connectors, shorter teeth or steeper flanks (angle closer to 90).",
+                set.length,
+                set.angle.to_degrees(),
+                set.pitch
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// Tooth centres (unwrapped arc lengths) of a piece: at the connectors when `own`, else half a
+/// pitch later.
+pub fn tooth_centres(connectors: &[f64], pitch: f64, own: bool) -> Vec<f64> {
+    connectors.iter().map(|&s| if own { s } else { s + 0.5 * pitch }).collect()
+}
+
+/// The toothed outline of `piece` (walking direction), its segments and their connectors.
+/// `own` says whether this piece's teeth sit at the connectors (else half a pitch later).
+pub fn outline(piece: &Walked, connectors: &[f64], set: &Settings, own: bool) -> (Contour, Vec<CubicBez>, Vec<usize>) {
+    let pitch = piece.perimeter() / connectors.len() as f64;
+    let profile = tooth(set, pitch);
+    let mut us = Vec::with_capacity(4 * connectors.len());
+    let mut vs = Vec::with_capacity(us.capacity());
+    for &c in &tooth_centres(connectors, pitch, own) {
+        for (du, v) in profile {
+            us.push(c + du);
+            vs.push(v);
+        }
+    }
+    let stations = locate_many(&piece.table, &us);
+    let mapped: Vec<Point> = stations
+        .iter()
+        .zip(&vs)
+        .map(|(st, &v)| st.point - piece.inward(st.tangent) * v)
+        .collect();
+    let m = us.len();
+    let mut b = Builder::new(piece, pitch);
+    for i in 0..m {
+        let j = (i + 1) % m;
+        let tag = i / 4;
+        if vs[i] != vs[j] {
+            b.line_to(mapped[i], mapped[j], tag);
+        } else {
+            let run = if j == 0 { us[0] + piece.perimeter() - us[i] } else { us[j] - us[i] };
+            b.run(&stations[i], &stations[j], run, vs[i], tag);
+        }
+    }
+    b.finish()
+}

@@ -1,0 +1,183 @@
+//! Checks that turn into warnings: holes that overlap or cross the edge, outlines whose teeth or
+//! leaves run into each other. Connectors are named by their label numbers (connector k is
+//! labelled k + 1), so the user can find them on the drawing.
+
+use kurbo::{BezPath, CubicBez, ParamCurve, ParamCurveExtrema, ParamCurveNearest, Point, Rect, Shape};
+
+/// At most this many connectors are listed in one warning; the rest are counted.
+const MAX_LISTED: usize = 30;
+
+/// "3, 4, 9 and 12 more".
+pub fn list(items: &[String]) -> String {
+    let shown = items.iter().take(MAX_LISTED).cloned().collect::<Vec<_>>().join(", ");
+    if items.len() > MAX_LISTED {
+        format!("{shown} and {} more", items.len() - MAX_LISTED)
+    } else {
+        shown
+    }
+}
+
+/// The cut outline as cubic segments with their tight bounding boxes, for distance and
+/// inside/outside queries.
+pub struct Edge {
+    segs: Vec<CubicBez>,
+    boxes: Vec<Rect>,
+}
+
+impl Edge {
+    pub fn new(segs: Vec<CubicBez>) -> Self {
+        let boxes = segs.iter().map(ParamCurveExtrema::bounding_box).collect();
+        Edge { segs, boxes }
+    }
+
+    /// Distance from `p` to the outline if it is below `limit`, else `None`. Only segments
+    /// whose bounding box comes within `limit` are measured exactly (kurbo's `nearest`
+    /// minimises |B(t) − p|² through the roots of its degree-5 derivative).
+    pub fn distance_below(&self, p: Point, limit: f64) -> Option<f64> {
+        let mut best: Option<f64> = None;
+        for (c, b) in self.segs.iter().zip(&self.boxes) {
+            let dx = (b.x0 - p.x).max(p.x - b.x1).max(0.0);
+            let dy = (b.y0 - p.y).max(p.y - b.y1).max(0.0);
+            if dx * dx + dy * dy >= limit * limit {
+                continue;
+            }
+            let d = c.nearest(p, 1e-12 * limit).distance_sq.sqrt();
+            if d < limit && best.is_none_or(|b| d < b) {
+                best = Some(d);
+            }
+        }
+        best
+    }
+
+    /// Whether `p` is enclosed (non-zero winding). Only segments whose box reaches the
+    /// horizontal ray to the left of `p` can contribute, so only those are handed to kurbo's
+    /// winding count.
+    pub fn contains(&self, p: Point) -> bool {
+        let mut path = BezPath::new();
+        for (c, b) in self.segs.iter().zip(&self.boxes) {
+            if b.y0 <= p.y && p.y <= b.y1 && b.x0 <= p.x {
+                path.move_to(c.p0);
+                path.curve_to(c.p1, c.p2, c.p3);
+            }
+        }
+        path.winding(p) != 0
+    }
+}
+
+/// Warnings about holes on one piece: pairs that overlap, holes that cross the cut edge, holes on
+/// the wrong side of it. `centers[k]` is connector k's hole, `radius` the drawn radius,
+/// `inside` whether holes belong inside the outline.
+pub fn holes(piece: &str, centers: &[Point], radius: f64, edge: &Edge, inside: bool) -> Vec<String> {
+    let mut out = Vec::new();
+    // Overlaps: sweep over the holes sorted by x; only pairs closer than 2r in x can overlap.
+    let mut order: Vec<usize> = (0..centers.len()).collect();
+    order.sort_by(|&a, &b| centers[a].x.total_cmp(&centers[b].x));
+    let mut pairs = Vec::new();
+    for (i, &a) in order.iter().enumerate() {
+        for &b in &order[i + 1..] {
+            if centers[b].x - centers[a].x >= 2.0 * radius {
+                break;
+            }
+            if (centers[b] - centers[a]).hypot() < 2.0 * radius {
+                let (lo, hi) = (a.min(b), a.max(b));
+                pairs.push((lo, hi));
+            }
+        }
+    }
+    pairs.sort();
+    if !pairs.is_empty() {
+        let names: Vec<String> = pairs.iter().map(|(a, b)| format!("{} and {}", a + 1, b + 1)).collect();
+        out.push(format!(
+            "On the {piece}, the holes of connectors {} overlap: use fewer connectors or smaller holes.",
+            list(&names)
+        ));
+    }
+    let mut crossing = Vec::new();
+    let mut wrong_side = Vec::new();
+    for (k, &c) in centers.iter().enumerate() {
+        if edge.distance_below(c, radius).is_some() {
+            crossing.push((k + 1).to_string());
+        } else if edge.contains(c) != inside {
+            wrong_side.push((k + 1).to_string());
+        }
+    }
+    if !crossing.is_empty() {
+        out.push(format!(
+            "On the {piece}, the holes of connectors {} cross the edge: increase the inset, use smaller holes or move the connectors away from tight curves.",
+            list(&crossing)
+        ));
+    }
+    if !wrong_side.is_empty() {
+        out.push(format!(
+            "On the {piece}, the holes of connectors {} lie {} the piece (the piece is narrower than the inset there): reduce the inset.",
+            list(&wrong_side),
+            if inside { "outside" } else { "inside" }
+        ));
+    }
+    out
+}
+
+/// Pairs of connectors whose parts of an outline cross each other. `segs[i]` belongs to
+/// connector `tags[i]`. The outline is flattened into short chords (sampled uniformly in t,
+/// `per_seg` chords per segment) and every pair of non-adjacent chords is tested for a proper
+/// crossing (orientation test) by a sweep over x; the result lists each pair of connectors once.
+pub fn collisions(segs: &[CubicBez], tags: &[usize], per_seg: usize) -> Vec<(usize, usize)> {
+    let per_seg = per_seg.max(1);
+    let mut chords: Vec<(Point, Point, usize)> = Vec::with_capacity(segs.len() * per_seg);
+    for (c, &tag) in segs.iter().zip(tags) {
+        let mut prev = c.p0;
+        for j in 1..=per_seg {
+            let p = c.eval(j as f64 / per_seg as f64);
+            if p != prev {
+                chords.push((prev, p, tag));
+            }
+            prev = p;
+        }
+    }
+    let m = chords.len();
+    let mut order: Vec<usize> = (0..m).collect();
+    let min_x = |i: usize| chords[i].0.x.min(chords[i].1.x);
+    let max_x = |i: usize| chords[i].0.x.max(chords[i].1.x);
+    order.sort_by(|&a, &b| min_x(a).total_cmp(&min_x(b)));
+    let mut found = Vec::new();
+    for (oi, &i) in order.iter().enumerate() {
+        for &j in &order[oi + 1..] {
+            if min_x(j) > max_x(i) {
+                break;
+            }
+            let gap = i.abs_diff(j);
+            if gap <= 1 || gap == m - 1 {
+                continue; // neighbours share an end point
+            }
+            if crosses(chords[i].0, chords[i].1, chords[j].0, chords[j].1) {
+                let (a, b) = (chords[i].2.min(chords[j].2), chords[i].2.max(chords[j].2));
+                found.push((a, b));
+            }
+        }
+    }
+    found.sort();
+    found.dedup();
+    found
+}
+
+/// Proper crossing of segments pq and rs: each one's end points lie strictly on opposite sides
+/// of the other's line (signs of the 2D cross products).
+fn crosses(p: Point, q: Point, r: Point, s: Point) -> bool {
+    let o = |a: Point, b: Point, c: Point| (b - a).cross(c - a);
+    let (d1, d2) = (o(p, q, r), o(p, q, s));
+    let (d3, d4) = (o(r, s, p), o(r, s, q));
+    d1 * d2 < 0.0 && d3 * d4 < 0.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn figure_eight_chords_cross_once() {
+        let l = |a: (f64, f64), b: (f64, f64)| CubicBez::new(a, a, b, b);
+        let segs = [l((0.0, 0.0), (2.0, 2.0)), l((2.0, 2.0), (2.0, 0.0)), l((2.0, 0.0), (0.0, 2.0)), l((0.0, 2.0), (0.0, 0.0))];
+        let got = collisions(&segs, &[0, 1, 2, 3], 1);
+        assert_eq!(got, vec![(0, 2)], "wanted the two diagonals (0, 2), got {got:?}");
+    }
+}

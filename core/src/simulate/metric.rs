@@ -1,0 +1,230 @@
+//! Chord triangulations of a flat, counter-clockwise sample polygon: the combinatorics of the
+//! polyhedral metric. Every edge is a chord inside the polygon, so its flat length is the
+//! piece's intrinsic distance. Built by ear clipping (valid for non-convex pieces, no zero-area
+//! triangles where avoidable) and changed only by legal flips (the new chord must cut a strictly
+//! convex flat quad, so it stays inside the piece).
+
+use std::collections::HashMap;
+
+/// Twice the signed area of triangle (a, b, c); positive when counter-clockwise.
+pub fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+/// Relative margin for "strictly" positive areas: a triangle counts as degenerate when its
+/// doubled area is below this times the squared polygon size.
+const AREA_EPS: f64 = 1e-12;
+
+/// A triangulation of polygon 0..n with counter-clockwise triangles, and the map from each
+/// directed edge to the triangle that contains it.
+#[derive(Debug, Clone)]
+pub struct Triangulation {
+    pub tris: Vec<[usize; 3]>,
+    n: usize,
+    edge: HashMap<u64, usize>,
+}
+
+impl Triangulation {
+    fn key(&self, a: usize, b: usize) -> u64 {
+        (a as u64) * (self.n as u64) + b as u64
+    }
+
+    fn from_tris(n: usize, tris: Vec<[usize; 3]>) -> Self {
+        let mut t = Triangulation { tris, n, edge: HashMap::new() };
+        t.edge.reserve(3 * t.tris.len());
+        for ti in 0..t.tris.len() {
+            t.index(ti);
+        }
+        t
+    }
+
+    fn index(&mut self, ti: usize) {
+        let [a, b, c] = self.tris[ti];
+        for (p, q) in [(a, b), (b, c), (c, a)] {
+            let k = self.key(p, q);
+            self.edge.insert(k, ti);
+        }
+    }
+
+    fn unindex(&mut self, ti: usize) {
+        let [a, b, c] = self.tris[ti];
+        for (p, q) in [(a, b), (b, c), (c, a)] {
+            let k = self.key(p, q);
+            self.edge.remove(&k);
+        }
+    }
+
+    /// Third vertex of the triangle containing the directed edge a → b.
+    pub fn opposite(&self, a: usize, b: usize) -> Option<usize> {
+        let ti = *self.edge.get(&self.key(a, b))?;
+        let t = self.tris[ti];
+        (0..3).find(|&m| t[m] == a && t[(m + 1) % 3] == b).map(|m| t[(m + 2) % 3])
+    }
+
+    /// Undirected edges `(i, j)`, `i < j`, each once: the n seam edges and the n − 3 chords.
+    pub fn edges(&self) -> Vec<(usize, usize)> {
+        let mut out = Vec::with_capacity(3 * self.tris.len());
+        for t in &self.tris {
+            for m in 0..3 {
+                let (a, b) = (t[m], t[(m + 1) % 3]);
+                // Boundary edges appear once (as k → k+1); interior ones twice: keep a < b there.
+                let interior = self.edge.contains_key(&self.key(b, a));
+                if !interior || a < b {
+                    out.push((a.min(b), a.max(b)));
+                }
+            }
+        }
+        out
+    }
+
+    /// Interior edges (chords) as `(i, j)` with `i < j`.
+    pub fn chords(&self) -> Vec<(usize, usize)> {
+        self.edges().into_iter().filter(|&(i, j)| !is_seam(self.n, i, j)).collect()
+    }
+
+    /// Replaces chord i–j by the other diagonal of its quad when that quad is strictly convex
+    /// in the flat piece `pts`. Returns whether it flipped.
+    pub fn flip(&mut self, i: usize, j: usize, pts: &[[f64; 2]], size2: f64) -> bool {
+        let (Some(&t1), Some(&t2)) = (self.edge.get(&self.key(i, j)), self.edge.get(&self.key(j, i))) else {
+            return false;
+        };
+        let (Some(k), Some(l)) = (self.opposite(i, j), self.opposite(j, i)) else { return false };
+        if k == l {
+            return false;
+        }
+        let eps = AREA_EPS * size2;
+        if orient(pts[k], pts[i], pts[l]) <= eps || orient(pts[l], pts[j], pts[k]) <= eps {
+            return false;
+        }
+        self.unindex(t1);
+        self.unindex(t2);
+        self.tris[t1] = [k, i, l];
+        self.tris[t2] = [l, j, k];
+        self.index(t1);
+        self.index(t2);
+        true
+    }
+}
+
+/// Whether i–j is a seam (boundary) edge of the n-gon.
+pub fn is_seam(n: usize, i: usize, j: usize) -> bool {
+    let d = i.abs_diff(j);
+    d == 1 || d == n - 1
+}
+
+/// Squared size of the polygon (bounding-box diagonal²), the scale for area margins.
+pub fn size2(pts: &[[f64; 2]]) -> f64 {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in pts {
+        for a in 0..2 {
+            lo[a] = lo[a].min(p[a]);
+            hi[a] = hi[a].max(p[a]);
+        }
+    }
+    (hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2)
+}
+
+/// Ear-clipping triangulation of the counter-clockwise simple polygon `pts`. Prefers strictly
+/// convex ears with no other vertex inside or on them; if none is left (a degenerate polygon
+/// from very coarse sampling of a thin piece) it returns `None`.
+pub fn ear_clip(pts: &[[f64; 2]]) -> Option<Triangulation> {
+    let n = pts.len();
+    let eps = AREA_EPS * size2(pts);
+    let mut prev: Vec<usize> = (0..n).map(|i| (i + n - 1) % n).collect();
+    let mut next: Vec<usize> = (0..n).map(|i| (i + 1) % n).collect();
+    let mut alive = n;
+    let mut tris = Vec::with_capacity(n.saturating_sub(2));
+    let is_ear = |prev: &[usize], next: &[usize], v: usize| -> bool {
+        let (a, b, c) = (prev[v], v, next[v]);
+        if orient(pts[a], pts[b], pts[c]) <= eps {
+            return false;
+        }
+        // No other remaining vertex inside or on the triangle.
+        let mut w = next[c];
+        while w != a {
+            let p = pts[w];
+            if orient(pts[a], pts[b], p) >= -eps && orient(pts[b], pts[c], p) >= -eps && orient(pts[c], pts[a], p) >= -eps {
+                return false;
+            }
+            w = next[w];
+        }
+        true
+    };
+    let mut v = 0;
+    let mut misses = 0;
+    while alive > 3 {
+        if is_ear(&prev, &next, v) {
+            let (a, c) = (prev[v], next[v]);
+            tris.push([a, v, c]);
+            next[a] = c;
+            prev[c] = a;
+            alive -= 1;
+            misses = 0;
+            // Alternate sides so the result is a strip rather than a fan.
+            v = next[c];
+        } else {
+            v = next[v];
+            misses += 1;
+            if misses > alive {
+                return None;
+            }
+        }
+    }
+    let (a, c) = (prev[v], next[v]);
+    if orient(pts[a], pts[v], pts[c]) <= 0.0 {
+        return None;
+    }
+    tris.push([a, v, c]);
+    Some(Triangulation::from_tris(n, tris))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn circle(n: usize) -> Vec<[f64; 2]> {
+        (0..n).map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / n as f64;
+            [t.cos(), t.sin()]
+        }).collect()
+    }
+
+    #[test]
+    fn ear_clip_gives_n_minus_2_ccw_triangles_and_3n_minus_3_edges() {
+        let pts = circle(17);
+        let t = ear_clip(&pts).expect("convex polygon triangulates");
+        assert_eq!(t.tris.len(), 15);
+        assert_eq!(t.edges().len(), 2 * 17 - 3, "wanted n seam edges + n-3 chords");
+        assert!(t.tris.iter().all(|&[a, b, c]| orient(pts[a], pts[b], pts[c]) > 0.0));
+    }
+
+    #[test]
+    fn ear_clip_handles_a_non_convex_polygon_with_collinear_samples() {
+        // An L-shape sampled with several points per side.
+        let corners = [[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0], [1.0, 2.0], [0.0, 2.0]];
+        let mut pts = vec![];
+        for k in 0..6 {
+            let (a, b) = (corners[k], corners[(k + 1) % 6]);
+            for s in 0..4 {
+                let t = s as f64 / 4.0;
+                pts.push([a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]);
+            }
+        }
+        let t = ear_clip(&pts).expect("L-shape triangulates");
+        assert_eq!(t.tris.len(), pts.len() - 2);
+        let area: f64 = t.tris.iter().map(|&[a, b, c]| orient(pts[a], pts[b], pts[c]) / 2.0).sum();
+        assert!((area - 3.0).abs() < 1e-12, "wanted area 3, got {area}");
+        assert!(t.tris.iter().all(|&[a, b, c]| orient(pts[a], pts[b], pts[c]) > 0.0), "a zero-area triangle");
+    }
+
+    #[test]
+    fn flip_replaces_the_diagonal_and_refuses_a_non_convex_quad() {
+        let pts = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let mut t = Triangulation::from_tris(4, vec![[0, 1, 2], [0, 2, 3]]);
+        assert!(t.flip(0, 2, &pts, 2.0));
+        assert_eq!(t.chords(), vec![(1, 3)]);
+        let dart = [[0.0, 0.0], [1.0, 0.0], [0.2, 0.2], [0.0, 1.0]];
+        let mut t = Triangulation::from_tris(4, vec![[0, 1, 2], [0, 2, 3]]);
+        assert!(!t.flip(0, 2, &dart, 2.0), "the chord 1-3 would leave the dart");
+    }
+}

@@ -1,0 +1,152 @@
+//! The solved mesh and the figures that say how true it is. Every figure is measured on the
+//! returned mesh against the flat pieces, independently of the solver's own residuals.
+
+use super::seam::SeamPieces;
+use super::solver::{reflex_sine, signed_volume, Solution};
+use super::Simulation;
+use std::f64::consts::TAU;
+
+/// A chord whose out-of-plane sine exceeds this is counted in `reflex_edges` (a visible dent).
+pub const REFLEX_REPORT: f64 = 1e-6;
+
+/// How true the shape is. Lengths and areas in the input's units.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Stats {
+    /// Largest |3D length / flat length − 1| over every edge of both pieces (seam edges are
+    /// measured against each piece's own chord).
+    pub max_strain: f64,
+    pub mean_strain: f64,
+    /// Largest distance between A's and B's true (curved) edges at the middle of a seam edge,
+    /// each laid onto its piece's triangle at that edge: what the polygonal seam leaves open.
+    pub seam_gap: f64,
+    /// |surface area − (area of A + area of B)| / (area of A + area of B), true curved outlines.
+    pub area_error: f64,
+    /// Sum of |angle defect| over the seam vertices: 4π when every seam vertex is convex
+    /// (Gauss–Bonnet makes the signed sum 4π for any closed mesh, so |·| is the informative one).
+    pub angle_defect_sum: f64,
+    /// Sum of |angle defect| over vertices off the seam (the flat parts: should be 0).
+    pub interior_defect_sum: f64,
+    /// Chords folded the wrong way (dents); 0 for a convex D-form.
+    pub reflex_edges: usize,
+    pub volume: f64,
+    pub area: f64,
+    pub iterations: usize,
+    pub flips: usize,
+    pub converged: bool,
+    pub ms: f64,
+}
+
+type V3 = [f64; 3];
+fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn norm(a: V3) -> f64 {
+    dot(a, a).sqrt()
+}
+fn cross(a: V3, b: V3) -> V3 {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+/// Angle at `a` in triangle (a, b, c), robust near 0 and π.
+fn angle(a: V3, b: V3, c: V3) -> f64 {
+    let (u, v) = (sub(b, a), sub(c, a));
+    norm(cross(u, v)).atan2(dot(u, v))
+}
+
+/// Maps flat point `q` into 3D by the affine map that takes flat triangle `f` to `t`.
+fn map_affine(f: [[f64; 2]; 3], t: [V3; 3], q: [f64; 2]) -> Option<V3> {
+    let det = (f[1][0] - f[0][0]) * (f[2][1] - f[0][1]) - (f[1][1] - f[0][1]) * (f[2][0] - f[0][0]);
+    if det == 0.0 {
+        return None;
+    }
+    let (dx, dy) = (q[0] - f[0][0], q[1] - f[0][1]);
+    let b1 = (dx * (f[2][1] - f[0][1]) - dy * (f[2][0] - f[0][0])) / det;
+    let b2 = ((f[1][0] - f[0][0]) * dy - (f[1][1] - f[0][1]) * dx) / det;
+    let b0 = 1.0 - b1 - b2;
+    Some([0, 1, 2].map(|a| b0 * t[0][a] + b1 * t[1][a] + b2 * t[2][a]))
+}
+
+/// Builds the output mesh and measures it.
+pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
+    let n = pieces.n;
+    let c = sol.x.iter().fold([0.0; 3], |s, p| [s[0] + p[0], s[1] + p[1], s[2] + p[2]]).map(|v| v / n as f64);
+    let x: Vec<V3> = sol.x.iter().map(|p| sub(*p, c)).collect();
+
+    let mut triangles = Vec::with_capacity(2 * n);
+    let mut piece = Vec::with_capacity(2 * n);
+    for (p, t) in sol.tri.iter().enumerate() {
+        for &[a, b, c] in &t.tris {
+            triangles.push(if p == 0 { [a, b, c] } else { [a, c, b] });
+            piece.push(p as u8);
+        }
+    }
+
+    let (mut max_strain, mut sum_strain, mut count) = (0.0f64, 0.0, 0usize);
+    for (p, t) in sol.tri.iter().enumerate() {
+        for (i, j) in t.edges() {
+            let d = pieces.chord(p, i, j);
+            if d > 0.0 {
+                let s = (norm(sub(x[j], x[i])) / d - 1.0).abs();
+                max_strain = max_strain.max(s);
+                sum_strain += s;
+                count += 1;
+            }
+        }
+    }
+
+    let mut seam_gap = 0.0f64;
+    for k in 0..n {
+        let k1 = (k + 1) % n;
+        let mid = |p: usize| {
+            let r = sol.tri[p].opposite(k, k1)?;
+            let f = &pieces.flat[p].pts;
+            map_affine([f[k], f[k1], f[r]], [x[k], x[k1], x[r]], pieces.flat[p].arc_mid[k])
+        };
+        if let (Some(a), Some(b)) = (mid(0), mid(1)) {
+            seam_gap = seam_gap.max(norm(sub(a, b)));
+        }
+    }
+
+    let mut angle_sum = vec![0.0; n];
+    let mut area = 0.0;
+    for &[a, b, c] in &triangles {
+        area += norm(cross(sub(x[b], x[a]), sub(x[c], x[a]))) / 2.0;
+        angle_sum[a] += angle(x[a], x[b], x[c]);
+        angle_sum[b] += angle(x[b], x[c], x[a]);
+        angle_sum[c] += angle(x[c], x[a], x[b]);
+    }
+    let flat_area = pieces.flat[0].area + pieces.flat[1].area;
+    // Vertices 0..n are the seam; any further vertex would be interior (this mesh has none).
+    let defect = |v: usize| (TAU - angle_sum[v]).abs();
+    let angle_defect_sum = (0..n).map(defect).sum();
+    let interior_defect_sum = (n..x.len()).map(defect).sum();
+
+    let mut reflex_edges = 0;
+    for (p, t) in sol.tri.iter().enumerate() {
+        for (i, j) in t.chords() {
+            if reflex_sine(&x, t, p, i, j).is_some_and(|s| s > REFLEX_REPORT) {
+                reflex_edges += 1;
+            }
+        }
+    }
+
+    let stats = Stats {
+        max_strain,
+        mean_strain: if count > 0 { sum_strain / count as f64 } else { 0.0 },
+        seam_gap,
+        area_error: if flat_area > 0.0 { (area - flat_area).abs() / flat_area } else { 0.0 },
+        angle_defect_sum,
+        interior_defect_sum,
+        reflex_edges,
+        volume: signed_volume(&x, &sol.tri).abs(),
+        area,
+        iterations: sol.iterations,
+        flips: sol.flips,
+        converged: sol.converged,
+        ms: 0.0,
+    };
+    Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), stats }
+}

@@ -1,0 +1,157 @@
+/*
+ * D-former – Normalize perimeters (Illustrator File > Scripts; ExtendScript, strict ES3).
+ * Scales each selected closed path uniformly about a pivot so that all get the same perimeter:
+ * the largest, the smallest, the mean, the first's, or an exact length in ruler units. Arc length
+ * scales linearly under a uniform scale, so the factor for a path of length L is target / L
+ * (Illustrator's PathItem.length). All factors are computed and checked before the first resize.
+ * Self-contained on purpose (see the Measure script for why).
+ */
+(function () {
+  var TITLE = "D-former \u2013 Normalize perimeters";
+
+  /** @param {Document} doc @returns {{name: string, perPoint: number, digits: number}} */
+  function unitsOf(doc) {
+    var u = doc.rulerUnits;
+    if (u == RulerUnits.Millimeters || u == RulerUnits.Qs) return { name: "mm", perPoint: 25.4 / 72, digits: 3 };
+    if (u == RulerUnits.Centimeters) return { name: "cm", perPoint: 2.54 / 72, digits: 4 };
+    if (u == RulerUnits.Inches) return { name: "in", perPoint: 1 / 72, digits: 4 };
+    if (u == RulerUnits.Picas) return { name: "pc", perPoint: 1 / 12, digits: 3 };
+    if (u == RulerUnits.Pixels) return { name: "px", perPoint: 1, digits: 2 };
+    return { name: "pt", perPoint: 1, digits: 2 };
+  }
+
+  /**
+   * Selected paths (groups searched, one-sub-path compounds unwrapped) and skipped item names.
+   * @param {Document} doc @returns {{paths: Array<PathItem>, skipped: Array<string>}}
+   */
+  function selectedPaths(doc) {
+    /** @type {Array<PathItem>} */
+    var paths = [];
+    /** @type {Array<string>} */
+    var skipped = [];
+    /** @param {*} it */
+    function visit(it) {
+      var label = it.name ? it.name : "<" + it.typename + ">";
+      if (it.typename === "PathItem") {
+        if (it.clipping || it.guides || it.pathPoints.length < 2) skipped.push(label);
+        else paths.push(it);
+      } else if (it.typename === "GroupItem") {
+        for (var j = 0; j < it.pageItems.length; j++) visit(it.pageItems[j]);
+      } else if (it.typename === "CompoundPathItem" && it.pathItems.length === 1) {
+        visit(it.pathItems[0]);
+      } else skipped.push(label);
+    }
+    var sel = doc.selection;
+    if (sel && typeof sel.length === "number" && !sel.typename) {
+      for (var i = 0; i < sel.length; i++) visit(sel[i]);
+    }
+    return { paths: paths, skipped: skipped };
+  }
+
+  var TARGETS = ["Largest perimeter", "Smallest perimeter", "Mean perimeter", "First path's perimeter", "Exact length"];
+  var PIVOTS = ["Center", "Top left", "Top", "Top right", "Left", "Right", "Bottom left", "Bottom", "Bottom right"];
+  var PIVOT_VALUES = [Transformation.CENTER, Transformation.TOPLEFT, Transformation.TOP, Transformation.TOPRIGHT,
+    Transformation.LEFT, Transformation.RIGHT, Transformation.BOTTOMLEFT, Transformation.BOTTOM, Transformation.BOTTOMRIGHT];
+
+  /**
+   * Ask for target and pivot. Returns null when cancelled.
+   * @param {string} unitName @param {string} suggested
+   * @returns {{target: number, exact: string, pivot: number} | null}
+   */
+  function ask(unitName, suggested) {
+    var w = new Window("dialog", TITLE);
+    w.alignChildren = "fill";
+    var g1 = w.add("group");
+    g1.add("statictext", undefined, "Make every perimeter equal to:");
+    var target = g1.add("dropdownlist", undefined, TARGETS, { name: "target" });
+    target.selection = target.items[0];
+    var g2 = w.add("group");
+    g2.add("statictext", undefined, "Exact length (" + unitName + "):");
+    var exact = g2.add("edittext", undefined, suggested, { name: "length" });
+    exact.characters = 10;
+    var g3 = w.add("group");
+    g3.add("statictext", undefined, "Scale about:");
+    var pivot = g3.add("dropdownlist", undefined, PIVOTS, { name: "pivot" });
+    pivot.selection = pivot.items[0];
+    var buttons = w.add("group");
+    buttons.alignment = "right";
+    buttons.add("button", undefined, "Cancel", { name: "cancel" });
+    buttons.add("button", undefined, "OK", { name: "ok" });
+    if (w.show() !== 1) return null;
+    var t = target.selection;
+    var p = pivot.selection;
+    return { target: t ? t.index : 0, exact: exact.text, pivot: p ? p.index : 0 };
+  }
+
+  if (app.documents.length === 0) {
+    alert("No document is open. Open a document and select the outlines to normalize.", TITLE);
+    return;
+  }
+  var doc = app.activeDocument;
+  var units = unitsOf(doc);
+  var found = selectedPaths(doc);
+  var paths = found.paths;
+  if (paths.length < 2) {
+    alert("Select at least two closed paths (found " + paths.length + ")." +
+      (found.skipped.length ? "\nNot usable: " + found.skipped.join(", ") + "." : ""), TITLE);
+    return;
+  }
+  var lengths = [];
+  for (var i = 0; i < paths.length; i++) {
+    var label = paths[i].name ? "\"" + paths[i].name + "\"" : "Path " + (i + 1);
+    if (!paths[i].closed) {
+      alert(label + " is an open path. A D-form needs closed outlines: close it (Object > Path > Join) or deselect it.", TITLE);
+      return;
+    }
+    var len = paths[i].length;
+    if (!(len > 0) || !isFinite(len)) {
+      alert(label + " has no length to scale (" + len + " pt).", TITLE);
+      return;
+    }
+    lengths.push(len);
+  }
+  var sum = 0, min = Infinity, max = -Infinity;
+  for (i = 0; i < lengths.length; i++) {
+    sum += lengths[i];
+    if (lengths[i] < min) min = lengths[i];
+    if (lengths[i] > max) max = lengths[i];
+  }
+  var choice = ask(units.name, (max * units.perPoint).toFixed(units.digits));
+  if (choice === null) return;
+  var target;
+  if (choice.target === 0) target = max;
+  else if (choice.target === 1) target = min;
+  else if (choice.target === 2) target = sum / lengths.length;
+  else if (choice.target === 3) target = lengths[0];
+  else {
+    var typed = Number(String(choice.exact).replace(/^\s+|\s+$/g, "").replace(",", "."));
+    if (!(typed > 0) || !isFinite(typed)) {
+      alert("Enter an exact length greater than 0 in " + units.name + " (got \"" + choice.exact + "\"). Nothing was changed.", TITLE);
+      return;
+    }
+    target = typed / units.perPoint;
+  }
+  var factors = [];
+  for (i = 0; i < paths.length; i++) {
+    var f = target / lengths[i];
+    if (!(f > 0) || !isFinite(f) || f > 1e4 || f < 1e-4) {
+      alert("Scaling " + (paths[i].name ? "\"" + paths[i].name + "\"" : "Path " + (i + 1)) + " by " + f +
+        " is out of range; choose another target. Nothing was changed.", TITLE);
+      return;
+    }
+    factors.push(f);
+  }
+  var pivot = PIVOT_VALUES[choice.pivot];
+  /** @param {number} points @returns {string} */
+  function show(points) {
+    return (points * units.perPoint).toFixed(units.digits) + " " + units.name;
+  }
+  var lines = ["Target perimeter: " + show(target)];
+  for (i = 0; i < paths.length; i++) {
+    var pct = 100 * factors[i];
+    paths[i].resize(pct, pct, true, true, true, true, 100, pivot);
+    lines.push((paths[i].name ? paths[i].name : "Path " + (i + 1)) + ": " + show(lengths[i]) + " \u2192 " + show(paths[i].length) +
+      " (scaled " + pct.toFixed(4) + " %)");
+  }
+  alert(lines.join("\n"), TITLE);
+})();

@@ -1,0 +1,838 @@
+/*
+ * D-former document bridge for Adobe Illustrator (ExtendScript, strict ES3).
+ * The CEP panel calls the dformer_* functions through CSInterface.evalScript; each returns a JSON
+ * string and never throws. Contract and selection rules: BRIDGE.md next to this file.
+ * Coordinates are Illustrator scripting coordinates: points, y axis up.
+ */
+
+// ---------------------------------------------------------------------------------------------
+// JSON (ExtendScript has no JSON object). Strict RFC 8259 reader, writer with round-trip numbers.
+// ---------------------------------------------------------------------------------------------
+
+/** @param {*} v @returns {boolean} */
+function dformer_isArray(v) {
+  return Object.prototype.toString.call(v) === "[object Array]";
+}
+
+/** @param {string} s @returns {string} */
+function dformer_quote(s) {
+  var out = "\"";
+  for (var i = 0; i < s.length; i++) {
+    var c = s.charAt(i);
+    var code = s.charCodeAt(i);
+    if (c === "\"") out += "\\\"";
+    else if (c === "\\") out += "\\\\";
+    else if (c === "\n") out += "\\n";
+    else if (c === "\r") out += "\\r";
+    else if (c === "\t") out += "\\t";
+    else if (code < 0x20 || code === 0x2028 || code === 0x2029) {
+      var hex = code.toString(16);
+      while (hex.length < 4) hex = "0" + hex;
+      out += "\\u" + hex;
+    } else out += c;
+  }
+  return out + "\"";
+}
+
+/**
+ * Shortest text that reads back as the same double where the engine allows it; 17 significant
+ * digits always round-trip an IEEE double.
+ * @param {number} n @returns {string}
+ */
+function dformer_number(n) {
+  if (!isFinite(n)) return "null";
+  if (n === 0) return "0";
+  var s = String(n);
+  if (Number(s) !== n) s = n.toPrecision(17);
+  return s;
+}
+
+/** @param {*} v @returns {string} */
+function dformer_stringify(v) {
+  if (v === null || v === undefined) return "null";
+  var t = typeof v;
+  if (t === "number") return dformer_number(v);
+  if (t === "boolean") return v ? "true" : "false";
+  if (t === "string") return dformer_quote(v);
+  var parts = [];
+  if (dformer_isArray(v)) {
+    for (var i = 0; i < v.length; i++) parts.push(dformer_stringify(v[i]));
+    return "[" + parts.join(",") + "]";
+  }
+  for (var k in v) {
+    if (Object.prototype.hasOwnProperty.call(v, k) && v[k] !== undefined && typeof v[k] !== "function") {
+      parts.push(dformer_quote(k) + ":" + dformer_stringify(v[k]));
+    }
+  }
+  return "{" + parts.join(",") + "}";
+}
+
+/**
+ * Parse JSON text; throws {dformer: message} naming the character position on malformed input.
+ * @param {string} text @returns {*}
+ */
+function dformer_parse(text) {
+  var at = 0;
+  /** @param {string} what @returns {never} */
+  function bad(what) {
+    throw { dformer: "The panel sent malformed data (" + what + " at character " + at + ")." };
+  }
+  function white() {
+    while (at < text.length) {
+      var c = text.charAt(at);
+      if (c === " " || c === "\t" || c === "\n" || c === "\r") at++;
+      else break;
+    }
+  }
+  /** @returns {string} */
+  function str() {
+    var out = "";
+    at++; // opening quote
+    while (at < text.length) {
+      var c = text.charAt(at++);
+      if (c === "\"") return out;
+      if (c === "\\") {
+        var e = text.charAt(at++);
+        if (e === "\"" || e === "\\" || e === "/") out += e;
+        else if (e === "b") out += "\b";
+        else if (e === "f") out += "\f";
+        else if (e === "n") out += "\n";
+        else if (e === "r") out += "\r";
+        else if (e === "t") out += "\t";
+        else if (e === "u") {
+          var hex = text.substring(at, at + 4);
+          if (!/^[0-9a-fA-F]{4}$/.test(hex)) bad("bad \\u escape");
+          out += String.fromCharCode(parseInt(hex, 16));
+          at += 4;
+        } else bad("bad escape");
+      } else if (c.charCodeAt(0) < 0x20) bad("control character in string");
+      else out += c;
+    }
+    return bad("unterminated string");
+  }
+  /** @returns {number} */
+  function num() {
+    var start = at;
+    while (at < text.length && "+-0123456789.eE".indexOf(text.charAt(at)) >= 0) at++;
+    var s = text.substring(start, at);
+    if (!/^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+\-]?[0-9]+)?$/.test(s)) bad("bad number");
+    return Number(s);
+  }
+  /** @param {string} word @param {*} value @returns {*} */
+  function lit(word, value) {
+    if (text.substring(at, at + word.length) !== word) bad("unexpected token");
+    at += word.length;
+    return value;
+  }
+  /** @returns {*} */
+  function value() {
+    white();
+    var c = text.charAt(at);
+    if (c === "{") {
+      /** @type {Object<string, *>} */
+      var obj = {};
+      at++;
+      white();
+      if (text.charAt(at) === "}") { at++; return obj; }
+      while (true) {
+        white();
+        if (text.charAt(at) !== "\"") bad("expected a property name");
+        var key = str();
+        white();
+        if (text.charAt(at) !== ":") bad("expected ':'");
+        at++;
+        obj[key] = value();
+        white();
+        c = text.charAt(at++);
+        if (c === "}") return obj;
+        if (c !== ",") bad("expected ',' or '}'");
+      }
+    }
+    if (c === "[") {
+      var arr = [];
+      at++;
+      white();
+      if (text.charAt(at) === "]") { at++; return arr; }
+      while (true) {
+        arr.push(value());
+        white();
+        c = text.charAt(at++);
+        if (c === "]") return arr;
+        if (c !== ",") bad("expected ',' or ']'");
+      }
+    }
+    if (c === "\"") return str();
+    if (c === "t") return lit("true", true);
+    if (c === "f") return lit("false", false);
+    if (c === "n") return lit("null", null);
+    if (c === "-" || (c >= "0" && c <= "9")) return num();
+    return bad(at >= text.length ? "unexpected end" : "unexpected character");
+  }
+  var result = value();
+  white();
+  if (at < text.length) bad("trailing characters");
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Shared helpers
+// ---------------------------------------------------------------------------------------------
+
+/** @param {string} message @returns {never} */
+function dformer_fail(message) {
+  throw { dformer: message };
+}
+
+/**
+ * Run body and turn its result or any thrown value into the bridge's JSON answer.
+ * @param {function(): Object} body @returns {string}
+ */
+function dformer_run(body) {
+  try {
+    var r = body();
+    r.ok = true;
+    return dformer_stringify(r);
+  } catch (e) {
+    var err = /** @type {*} */ (e);
+    var msg;
+    if (err && typeof err.dformer === "string") msg = err.dformer;
+    else msg = "Illustrator reported an error: " + (err && err.message ? err.message : String(err)) +
+      (err && err.line ? " (dformer-bridge.jsx line " + err.line + ")" : "");
+    return dformer_stringify({ ok: false, error: msg });
+  }
+}
+
+/** @returns {Document} */
+function dformer_doc() {
+  if (app.documents.length === 0) dformer_fail("No document is open. Open or create a document, then select two paths.");
+  return app.activeDocument;
+}
+
+/**
+ * Ruler units of a document as one of mm cm in pt px pc (nearest family for the others).
+ * @param {Document} doc @returns {{units: string, pointsPerUnit: number, rulerUnits: string}}
+ */
+function dformer_unitsOf(doc) {
+  var u = doc.rulerUnits;
+  var name = String(u);
+  var units = "pt";
+  if (u == RulerUnits.Millimeters || u == RulerUnits.Qs) units = "mm";
+  else if (u == RulerUnits.Centimeters) units = "cm";
+  else if (u == RulerUnits.Inches) units = "in";
+  else if (u == RulerUnits.Points) units = "pt";
+  else if (u == RulerUnits.Pixels) units = "px";
+  else if (u == RulerUnits.Picas) units = "pc";
+  else if (/Meter/.test(name)) units = "mm";
+  else if (/Feet|Yard|Inch/.test(name)) units = "in";
+  /** @type {Object<string, number>} */
+  var perUnit = { mm: 72 / 25.4, cm: 720 / 25.4, "in": 72, pt: 1, px: 1, pc: 12 };
+  return { units: units, pointsPerUnit: perUnit[units], rulerUnits: name };
+}
+
+/** Display name of a page item for messages. @param {PageItem} it @returns {string} */
+function dformer_nameOf(it) {
+  if (it.name) return it.name;
+  return "<" + it.typename.replace(/Item$/, "") + ">";
+}
+
+/** @param {PathItem} p @returns {boolean} */
+function dformer_hasUuid(p) {
+  var doc = app.activeDocument;
+  var u;
+  try { u = p.uuid; } catch (e) { u = undefined; }
+  return u !== undefined && u !== null && u !== "" && dformer_canLookUpUuid(doc);
+}
+
+/** Document.getPageItemFromUuid exists (Illustrator 24+). @param {Document} doc @returns {boolean} */
+function dformer_canLookUpUuid(doc) {
+  try { return doc.getPageItemFromUuid !== undefined; } catch (e) { return false; }
+}
+
+/**
+ * Index of child in a collection (DOM references compare with ==).
+ * @param {*} coll @param {*} child @returns {number}
+ */
+function dformer_indexIn(coll, child) {
+  for (var i = 0; i < coll.length; i++) if (coll[i] == child) return i;
+  return -1;
+}
+
+/**
+ * Handle for a path: "u:<uuid>" (Illustrator 24+) or "p:<position>#<point count>" (older).
+ * @param {PathItem} p @returns {string}
+ */
+function dformer_idOf(p) {
+  if (dformer_hasUuid(p)) return "u:" + p.uuid;
+  var parts = [];
+  /** @type {*} */
+  var node = p;
+  while (node.typename !== "Document") {
+    var parent = node.parent;
+    if (node.typename === "Layer") parts.unshift("L" + dformer_indexIn(parent.layers, node));
+    else if (parent.typename === "CompoundPathItem") parts.unshift("C" + dformer_indexIn(parent.pathItems, node));
+    else parts.unshift(String(dformer_indexIn(parent.pageItems, node)));
+    node = parent;
+  }
+  return "p:" + parts.join("/") + "#" + p.pathPoints.length;
+}
+
+/**
+ * The PathItem an id names, or a user error saying why not.
+ * @param {Document} doc @param {*} id @param {string} where @returns {PathItem}
+ */
+function dformer_resolve(doc, id, where) {
+  if (typeof id !== "string" || id === "") dformer_fail(where + ": missing path id.");
+  var stale = where + ": the path (" + id + ") is no longer in the document or changed since it was read; select the paths again.";
+  /** @type {*} */
+  var found = null;
+  if (id.substring(0, 2) === "u:") {
+    if (!dformer_canLookUpUuid(doc)) dformer_fail(stale);
+    try { found = doc.getPageItemFromUuid ? doc.getPageItemFromUuid(id.substring(2)) : null; } catch (e) { found = null; }
+  } else if (id.substring(0, 2) === "p:") {
+    var hash = id.lastIndexOf("#");
+    var parts = id.substring(2, hash < 0 ? id.length : hash).split("/");
+    try {
+      /** @type {*} */
+      var node = doc;
+      for (var i = 0; i < parts.length; i++) {
+        var part = parts[i];
+        if (part.charAt(0) === "L") node = node.layers[Number(part.substring(1))];
+        else if (part.charAt(0) === "C") node = node.pathItems[Number(part.substring(1))];
+        else node = node.pageItems[Number(part)];
+      }
+      found = node;
+      if (hash < 0 || found.typename !== "PathItem" || String(found.pathPoints.length) !== id.substring(hash + 1)) found = null;
+    } catch (e2) {
+      found = null;
+    }
+  } else {
+    dformer_fail(where + ": \"" + id + "\" is not a D-former path id.");
+  }
+  if (!found || found.typename !== "PathItem") dformer_fail(stale);
+  return /** @type {PathItem} */ (found);
+}
+
+/**
+ * Why an item (or its layer) cannot be written, or "" if it can.
+ * @param {*} it @returns {string}
+ */
+function dformer_blocked(it) {
+  /** @type {*} */
+  var node = it;
+  while (node && node.typename !== "Document") {
+    if (node.typename === "Layer") {
+      if (node.locked) return "its layer \"" + node.name + "\" is locked";
+      if (!node.visible) return "its layer \"" + node.name + "\" is hidden";
+    } else {
+      if (node.locked) return (node == it ? "it" : "its group \"" + dformer_nameOf(node) + "\"") + " is locked";
+      if (node.hidden) return (node == it ? "it" : "its group \"" + dformer_nameOf(node) + "\"") + " is hidden";
+    }
+    node = node.parent;
+  }
+  return "";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading the selection
+// ---------------------------------------------------------------------------------------------
+
+/** Reasons for page items D-former does not read. */
+var DFORMER_SKIP = {
+  TextFrame: "text frame: D-former works on paths; outline the text first (Type > Create Outlines)",
+  LegacyTextItem: "legacy text: update and outline it first",
+  RasterItem: "image: D-former works on vector paths",
+  PlacedItem: "placed image: D-former works on vector paths",
+  SymbolItem: "symbol instance: break the link to the symbol first",
+  MeshItem: "gradient mesh: not a path",
+  GraphItem: "graph: ungroup it first",
+  PluginItem: "plug-in art (blend, live effect, envelope…): expand it first (Object > Expand)",
+  NonNativeItem: "non-native art: not a path"
+};
+
+/**
+ * Walk the selection into readable paths and skipped items (rules in BRIDGE.md).
+ * @param {Document} doc
+ * @returns {{paths: Array<{item: PathItem, id: string}>, skipped: Array<{name: string, reason: string}>}}
+ */
+function dformer_collect(doc) {
+  /** @type {Array<{item: PathItem, id: string}>} */
+  var paths = [];
+  /** @type {Array<{name: string, reason: string}>} */
+  var skipped = [];
+  /** @type {Object<string, boolean>} */
+  var seen = {};
+  /** @param {PathItem} p @param {string} label */
+  function takePath(p, label) {
+    if (p.clipping) { skipped.push({ name: label, reason: "clipping path: it masks its group; D-former leaves it alone" }); return; }
+    if (p.guides) { skipped.push({ name: label, reason: "guide: not artwork" }); return; }
+    if (p.pathPoints.length < 2) { skipped.push({ name: label, reason: "single anchor point (a stray point, not an outline)" }); return; }
+    var id = dformer_idOf(p);
+    if (seen[id]) return;
+    seen[id] = true;
+    paths.push({ item: p, id: id });
+  }
+  /** @param {*} it */
+  function visit(it) {
+    var t = it.typename;
+    var label = dformer_nameOf(it);
+    if (t === "PathItem") takePath(it, label);
+    else if (t === "GroupItem") {
+      var g = /** @type {GroupItem} */ (it);
+      for (var j = 0; j < g.pageItems.length; j++) visit(g.pageItems[j]);
+    } else if (t === "CompoundPathItem") {
+      var c = /** @type {CompoundPathItem} */ (it);
+      if (c.pathItems.length === 1) takePath(c.pathItems[0], label);
+      else skipped.push({ name: label, reason: "compound path with " + c.pathItems.length +
+        " sub-paths: release it (Object > Compound Path > Release) and select one outline" });
+    } else {
+      var why = /** @type {Object<string, string>} */ (DFORMER_SKIP)[t];
+      skipped.push({ name: label, reason: why ? why : t + ": not a path" });
+    }
+  }
+  var sel = doc.selection;
+  if (sel === null || sel === undefined) return { paths: paths, skipped: skipped };
+  if (typeof sel.length !== "number" || sel.typename) {
+    skipped.push({ name: "<Text selection>", reason: "text is being edited: press Esc and select the paths" });
+    return { paths: paths, skipped: skipped };
+  }
+  for (var i = 0; i < sel.length; i++) visit(sel[i]);
+  return { paths: paths, skipped: skipped };
+}
+
+/** @param {*} v @returns {Array<number>} */
+function dformer_xy(v) {
+  return [Number(v[0]), Number(v[1])];
+}
+
+/**
+ * The core's path JSON for a PathItem, with its anchor selection.
+ * @param {PathItem} p
+ */
+function dformer_readPath(p) {
+  var pts = [];
+  var selectedAnchors = [];
+  var n = p.pathPoints.length;
+  for (var i = 0; i < n; i++) {
+    var pp = p.pathPoints[i];
+    pts.push({ anchor: dformer_xy(pp.anchor), left: dformer_xy(pp.leftDirection), right: dformer_xy(pp.rightDirection) });
+    if (pp.selected == PathPointSelection.ANCHORPOINT) selectedAnchors.push(i);
+  }
+  return { path: { closed: p.closed, points: pts }, selectedAnchors: selectedAnchors, allSelected: n > 0 && selectedAnchors.length === n };
+}
+
+// ---------------------------------------------------------------------------------------------
+// Public functions (the panel's contract; see BRIDGE.md)
+// ---------------------------------------------------------------------------------------------
+
+/** @returns {string} */
+function dformer_info() {
+  return dformer_run(function () {
+    return { bridge: "dformer-bridge", version: "1", hasDocument: app.documents.length > 0, app: String(app.version) };
+  });
+}
+
+/** @returns {string} */
+function dformer_units() {
+  return dformer_run(function () {
+    var doc = dformer_doc();
+    var u = dformer_unitsOf(doc);
+    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, rulerUnits: u.rulerUnits };
+  });
+}
+
+/** @returns {string} */
+function dformer_selectionKey() {
+  return dformer_run(function () {
+    if (app.documents.length === 0) return { key: "" };
+    var doc = app.activeDocument;
+    var c = dformer_collect(doc);
+    var parts = [doc.name, String(doc.rulerUnits), String(c.skipped.length)];
+    for (var i = 0; i < c.paths.length; i++) {
+      var p = c.paths[i].item;
+      var sel = [];
+      for (var j = 0; j < p.pathPoints.length; j++) if (p.pathPoints[j].selected == PathPointSelection.ANCHORPOINT) sel.push(j);
+      parts.push(c.paths[i].id + "|" + p.pathPoints.length + "|" + p.closed + "|" + p.geometricBounds.join(",") + "|" + sel.join(","));
+    }
+    return { key: parts.join(";") };
+  });
+}
+
+/** @returns {string} */
+function dformer_selection() {
+  return dformer_run(function () {
+    var doc = dformer_doc();
+    var u = dformer_unitsOf(doc);
+    var c = dformer_collect(doc);
+    var items = [];
+    for (var i = 0; i < c.paths.length; i++) {
+      var p = c.paths[i].item;
+      var r = dformer_readPath(p);
+      items.push({
+        id: c.paths[i].id, name: dformer_nameOf(p), layer: p.layer ? p.layer.name : "",
+        path: r.path, selectedAnchors: r.selectedAnchors, allSelected: r.allSelected, length: p.length
+      });
+    }
+    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, items: items, skipped: c.skipped };
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// dformer_apply: validate everything, then write (with rollback if Illustrator throws midway)
+// ---------------------------------------------------------------------------------------------
+
+var DFORMER_LAYER_DEFAULTS = {
+  cut: { name: "Cut", color: [255, 0, 0], width: 0.072 },
+  score: { name: "Score", color: [0, 0, 255], width: 0.072 },
+  engrave: { name: "Engrave", color: [0, 0, 0], width: 0.072 }
+};
+
+/** @param {*} v @param {string} where @returns {number} */
+function dformer_finite(v, where) {
+  if (typeof v !== "number" || !isFinite(v)) {
+    dformer_fail(where + ": expected a finite number, got " + (typeof v === "number" ? String(v) : dformer_stringify(v)) + ".");
+  }
+  return v;
+}
+
+/** @param {*} v @param {string} where @returns {Array<number>} */
+function dformer_pair(v, where) {
+  if (!dformer_isArray(v) || v.length !== 2) dformer_fail(where + ": expected [x, y], got " + dformer_stringify(v) + ".");
+  return [dformer_finite(v[0], where + " x"), dformer_finite(v[1], where + " y")];
+}
+
+/**
+ * Check a core path and return it normalised ({closed, points:[{anchor,left,right}]}).
+ * @param {*} path @param {string} where
+ * @returns {{closed: boolean, points: Array<{anchor: Array<number>, left: Array<number>, right: Array<number>}>}}
+ */
+function dformer_checkPath(path, where) {
+  if (!path || typeof path !== "object" || !dformer_isArray(path.points)) dformer_fail(where + ": expected a path {closed, points:[…]}.");
+  if (path.points.length < 2) dformer_fail(where + ": a path needs at least 2 points, got " + path.points.length + ".");
+  var out = [];
+  for (var i = 0; i < path.points.length; i++) {
+    var q = path.points[i];
+    var w = where + " point " + i;
+    if (!q || typeof q !== "object") dformer_fail(w + ": expected {anchor, left, right}.");
+    var a = dformer_pair(q.anchor, w + " anchor");
+    var l = q.left === undefined || q.left === null ? a : dformer_pair(q.left, w + " left");
+    var r = q.right === undefined || q.right === null ? a : dformer_pair(q.right, w + " right");
+    out.push({ anchor: a, left: l, right: r });
+  }
+  return { closed: path.closed !== false, points: out };
+}
+
+/** @param {*} v @param {string} where @returns {Array<number>} */
+function dformer_checkColor(v, where) {
+  if (!dformer_isArray(v) || v.length !== 3) dformer_fail(where + ": expected [r, g, b] from 0 to 255, got " + dformer_stringify(v) + ".");
+  for (var i = 0; i < 3; i++) {
+    dformer_finite(v[i], where);
+    if (v[i] < 0 || v[i] > 255) dformer_fail(where + ": colour components go from 0 to 255, got " + v[i] + ".");
+  }
+  return [v[0], v[1], v[2]];
+}
+
+/**
+ * Validate an apply request against the document; returns the write plan. Writes nothing.
+ * @param {Document} doc @param {*} req
+ */
+function dformer_plan(doc, req) {
+  if (!req || typeof req !== "object" || dformer_isArray(req)) dformer_fail("The panel sent no apply request.");
+  if (req.document !== undefined && req.document !== null && req.document !== doc.name) {
+    dformer_fail("The active document is \"" + doc.name + "\", not \"" + req.document + "\" where the paths were read; switch back or select the paths again.");
+  }
+  var labelSize = req.labelSize === undefined || req.labelSize === null ? 6 : dformer_finite(req.labelSize, "labelSize");
+  if (labelSize <= 0) dformer_fail("labelSize must be greater than 0, got " + labelSize + ".");
+
+  // Layers: defaults merged with the request.
+  /** @type {Object<string, {name: string, color: Array<number>, width: number, layer: *, needed: boolean}>} */
+  var layers = {};
+  var roles = ["cut", "score", "engrave"];
+  var reqLayers = req.layers && typeof req.layers === "object" ? req.layers : {};
+  for (var r = 0; r < roles.length; r++) {
+    var role = roles[r];
+    var d = /** @type {*} */ (DFORMER_LAYER_DEFAULTS)[role];
+    var given = reqLayers[role] && typeof reqLayers[role] === "object" ? reqLayers[role] : {};
+    var name = given.name === undefined || given.name === null ? d.name : given.name;
+    if (typeof name !== "string" || name === "") dformer_fail("layers." + role + ".name: expected a layer name.");
+    var color = dformer_checkColor(given.color === undefined || given.color === null ? d.color : given.color, "layers." + role + ".color");
+    var width = given.width === undefined || given.width === null ? d.width : dformer_finite(given.width, "layers." + role + ".width");
+    if (width <= 0) dformer_fail("layers." + role + ".width: stroke width must be greater than 0, got " + width + ".");
+    layers[role] = { name: name, color: color, width: width, layer: null, needed: false };
+  }
+
+  // In-place updates.
+  var updates = [];
+  var reqUpdates = req.updates === undefined || req.updates === null ? [] : req.updates;
+  if (!dformer_isArray(reqUpdates)) dformer_fail("updates: expected a list.");
+  /** @type {Object<string, boolean>} */
+  var seenIds = {};
+  for (var u = 0; u < reqUpdates.length; u++) {
+    var up = reqUpdates[u];
+    var where = "updates[" + u + "]";
+    if (!up || typeof up !== "object") dformer_fail(where + ": expected {id, path}.");
+    var item = dformer_resolve(doc, up.id, where);
+    where = where + " (\"" + dformer_nameOf(item) + "\")";
+    if (seenIds[up.id]) dformer_fail(where + ": the same path is updated twice.");
+    seenIds[up.id] = true;
+    var why = dformer_blocked(item);
+    if (why) dformer_fail(where + ": cannot change the path because " + why + ".");
+    var path = dformer_checkPath(up.path, where);
+    var n = item.pathPoints.length;
+    if (path.points.length !== n) {
+      dformer_fail(where + ": the path has " + n + " anchors in Illustrator but the new path has " + path.points.length +
+        "; in-place updates keep the anchor count.");
+    }
+    updates.push({ item: item, path: path });
+  }
+
+  // Pieces.
+  var pieces = [];
+  var reqPieces = req.pieces === undefined || req.pieces === null ? [] : req.pieces;
+  if (!dformer_isArray(reqPieces)) dformer_fail("pieces: expected a list.");
+  /** @type {Object<string, boolean>} */
+  var seenNames = {};
+  for (var k = 0; k < reqPieces.length; k++) {
+    var pc = reqPieces[k];
+    var pw = "pieces[" + k + "]";
+    if (!pc || typeof pc !== "object") dformer_fail(pw + ": expected {name, holes, labels, marks}.");
+    if (pc.id !== undefined && pc.id !== null) dformer_resolve(doc, pc.id, pw);
+    var pname = pc.name === undefined || pc.name === null ? "piece " + String.fromCharCode(65 + k) : pc.name;
+    if (typeof pname !== "string" || pname === "") dformer_fail(pw + ": name must be a non-empty string.");
+    if (seenNames[pname]) dformer_fail(pw + ": two pieces are both named \"" + pname + "\".");
+    seenNames[pname] = true;
+    pw = pw + " (\"" + pname + "\")";
+    var piece = { name: pname, outline: /** @type {*} */ (null), holes: /** @type {Array<*>} */ ([]), marks: /** @type {Array<*>} */ ([]), labels: /** @type {Array<*>} */ ([]) };
+    if (pc.outline !== undefined && pc.outline !== null) piece.outline = dformer_checkPath(pc.outline, pw + " outline");
+    var lists = ["holes", "marks", "labels"];
+    for (var li = 0; li < lists.length; li++) {
+      var lv = pc[lists[li]];
+      if (lv === undefined || lv === null) lv = [];
+      if (!dformer_isArray(lv)) dformer_fail(pw + " " + lists[li] + ": expected a list.");
+    }
+    var holes = pc.holes || [];
+    for (var h = 0; h < holes.length; h++) {
+      var hp = holes[h] && holes[h].path && !holes[h].points ? holes[h].path : holes[h];
+      piece.holes.push(dformer_checkPath(hp, pw + " holes[" + h + "]"));
+    }
+    var marks = pc.marks || [];
+    for (var m = 0; m < marks.length; m++) piece.marks.push(dformer_checkPath(marks[m], pw + " marks[" + m + "]"));
+    var labels = pc.labels || [];
+    for (var b = 0; b < labels.length; b++) {
+      var lb = labels[b];
+      var lw = pw + " labels[" + b + "]";
+      if (!lb || typeof lb !== "object") dformer_fail(lw + ": expected {text, at, angle}.");
+      if (typeof lb.text !== "string" && typeof lb.text !== "number") dformer_fail(lw + ": text must be a string.");
+      var size = lb.size === undefined || lb.size === null ? labelSize : dformer_finite(lb.size, lw + " size");
+      if (size <= 0) dformer_fail(lw + ": size must be greater than 0, got " + size + ".");
+      piece.labels.push({
+        text: String(lb.text), at: dformer_pair(lb.at, lw + " at"),
+        angle: lb.angle === undefined || lb.angle === null ? 0 : dformer_finite(lb.angle, lw + " angle"), size: size
+      });
+    }
+    if (piece.outline || piece.holes.length) layers.cut.needed = true;
+    if (piece.marks.length) layers.score.needed = true;
+    if (piece.labels.length) layers.engrave.needed = true;
+    pieces.push(piece);
+  }
+
+  // Target layers: existing ones must be writable.
+  for (var t = 0; t < roles.length; t++) {
+    var L = layers[roles[t]];
+    if (!L.needed) continue;
+    for (var x = 0; x < doc.layers.length; x++) {
+      if (doc.layers[x].name === L.name) { L.layer = doc.layers[x]; break; }
+    }
+    if (L.layer && (L.layer.locked || !L.layer.visible)) {
+      dformer_fail("Layer \"" + L.name + "\" is " + (L.layer.locked ? "locked" : "hidden") + "; unlock and show it in the Layers panel, then apply again.");
+    }
+  }
+  return { updates: updates, pieces: pieces, layers: layers, replace: req.replace !== false };
+}
+
+/** @param {Array<number>} c @returns {RGBColor} */
+function dformer_rgb(c) {
+  var col = new RGBColor();
+  col.red = c[0];
+  col.green = c[1];
+  col.blue = c[2];
+  return col;
+}
+
+/**
+ * SMOOTH when both handles lie on one line through the anchor on opposite sides, else CORNER.
+ * @param {{anchor: Array<number>, left: Array<number>, right: Array<number>}} q @returns {PointType}
+ */
+function dformer_pointType(q) {
+  var lx = q.left[0] - q.anchor[0], ly = q.left[1] - q.anchor[1];
+  var rx = q.right[0] - q.anchor[0], ry = q.right[1] - q.anchor[1];
+  var ll = Math.sqrt(lx * lx + ly * ly), rl = Math.sqrt(rx * rx + ry * ry);
+  if (ll === 0 || rl === 0) return PointType.CORNER;
+  var cross = lx * ry - ly * rx, dot = lx * rx + ly * ry;
+  return Math.abs(cross) <= 1e-9 * ll * rl && dot < 0 ? PointType.SMOOTH : PointType.CORNER;
+}
+
+/**
+ * Set every PathPoint of p from a checked path (same count).
+ * @param {PathItem} p @param {{points: Array<{anchor: Array<number>, left: Array<number>, right: Array<number>}>}} path
+ */
+function dformer_setPoints(p, path) {
+  for (var i = 0; i < path.points.length; i++) {
+    var q = path.points[i];
+    var pp = p.pathPoints[i];
+    pp.anchor = [q.anchor[0], q.anchor[1]];
+    pp.leftDirection = [q.left[0], q.left[1]];
+    pp.rightDirection = [q.right[0], q.right[1]];
+    pp.pointType = dformer_pointType(q);
+  }
+}
+
+/**
+ * Draw a new stroked path into a group.
+ * @param {GroupItem} group @param {*} path @param {string} name @param {*} style @returns {PathItem}
+ */
+function dformer_draw(group, path, name, style) {
+  var p = group.pathItems.add();
+  var anchors = [];
+  for (var i = 0; i < path.points.length; i++) anchors.push([path.points[i].anchor[0], path.points[i].anchor[1]]);
+  p.setEntirePath(/** @type {*} */ (anchors));
+  dformer_setPoints(p, path);
+  p.closed = path.closed;
+  p.name = name;
+  p.filled = false;
+  p.stroked = true;
+  p.strokeColor = dformer_rgb(style.color);
+  p.strokeWidth = style.width;
+  return p;
+}
+
+/**
+ * Point-text label, centre-justified, rotated by angle (degrees CCW), its visual centre at `at`
+ * (baseline centre moved 0.35·size down along the rotated up-vector: half a cap height).
+ * @param {GroupItem} group @param {*} label @param {string} name @param {*} style @returns {TextFrame}
+ */
+function dformer_label(group, label, name, style) {
+  var tf = group.textFrames.add();
+  tf.contents = label.text;
+  tf.name = name;
+  tf.textRange.characterAttributes.size = label.size;
+  tf.textRange.characterAttributes.fillColor = dformer_rgb(style.color);
+  tf.textRange.characterAttributes.strokeColor = new NoColor();
+  tf.textRange.paragraphAttributes.justification = Justification.CENTER;
+  if (label.angle !== 0) tf.rotate(label.angle);
+  var a = label.angle * Math.PI / 180, h = 0.35 * label.size;
+  tf.anchor = [label.at[0] + h * Math.sin(a), label.at[1] - h * Math.cos(a)];
+  return tf;
+}
+
+/**
+ * Apply a validated plan. Records what it does so that a failure midway can be undone.
+ * @param {Document} doc @param {*} plan
+ */
+function dformer_write(doc, plan) {
+  var journal = { saved: /** @type {Array<*>} */ ([]), groups: /** @type {Array<*>} */ ([]), layers: /** @type {Array<*>} */ ([]) };
+  var created = 0;
+  var groupNames = [];
+  var layerNames = [];
+  var old = [];
+  try {
+    for (var u = 0; u < plan.updates.length; u++) {
+      var item = plan.updates[u].item;
+      journal.saved.push({ item: item, path: dformer_readPath(item).path, types: dformer_types(item) });
+      dformer_setPoints(item, plan.updates[u].path);
+    }
+    var roles = ["cut", "score", "engrave"];
+    for (var r = 0; r < roles.length; r++) {
+      var L = plan.layers[roles[r]];
+      if (!L.needed) continue;
+      if (!L.layer) {
+        L.layer = doc.layers.add();
+        L.layer.name = L.name;
+        L.layer.color = dformer_rgb(L.color);
+        journal.layers.push(L.layer);
+      }
+      layerNames.push(L.name);
+    }
+    for (var k = 0; k < plan.pieces.length; k++) {
+      var pc = plan.pieces[k];
+      var jobs = [
+        { role: "cut", title: "connectors", count: pc.holes.length + (pc.outline ? 1 : 0) },
+        { role: "score", title: "marks", count: pc.marks.length },
+        { role: "engrave", title: "labels", count: pc.labels.length }
+      ];
+      for (var j = 0; j < jobs.length; j++) {
+        if (jobs[j].count === 0) continue;
+        var style = plan.layers[jobs[j].role];
+        var gname = "D-former " + pc.name + " " + jobs[j].title;
+        if (plan.replace) {
+          for (var g = 0; g < style.layer.groupItems.length; g++) {
+            if (style.layer.groupItems[g].name === gname) old.push(style.layer.groupItems[g]);
+          }
+        }
+        var group = style.layer.groupItems.add();
+        journal.groups.push(group);
+        group.name = gname;
+        groupNames.push(gname);
+        var i;
+        if (jobs[j].role === "cut") {
+          if (pc.outline) { dformer_draw(group, pc.outline, "outline", style); created++; }
+          for (i = 0; i < pc.holes.length; i++) { dformer_draw(group, pc.holes[i], "hole " + (i + 1), style); created++; }
+        } else if (jobs[j].role === "score") {
+          for (i = 0; i < pc.marks.length; i++) { dformer_draw(group, pc.marks[i], i === 0 ? "start mark" : "mark " + (i + 1), style); created++; }
+        } else {
+          for (i = 0; i < pc.labels.length; i++) { dformer_label(group, pc.labels[i], "label " + (i + 1), style); created++; }
+        }
+      }
+    }
+    for (var o = 0; o < old.length; o++) old[o].remove();
+  } catch (e) {
+    var err = /** @type {*} */ (e);
+    var undone = dformer_undo(journal);
+    dformer_fail("Illustrator reported an error while writing: " + (err && err.message ? err.message : String(err)) +
+      (undone ? " (the changes were undone)." : " (some changes could not be undone; use Edit > Undo)."));
+  }
+  return { created: created, updated: plan.updates.length, groups: groupNames, layers: layerNames };
+}
+
+/** @param {PathItem} p @returns {Array<PointType>} */
+function dformer_types(p) {
+  var t = [];
+  for (var i = 0; i < p.pathPoints.length; i++) t.push(p.pathPoints[i].pointType);
+  return t;
+}
+
+/**
+ * Undo a partial write: remove new groups and layers, restore updated paths. True if all went well.
+ * @param {*} journal @returns {boolean}
+ */
+function dformer_undo(journal) {
+  var ok = true;
+  var i;
+  for (i = journal.groups.length - 1; i >= 0; i--) {
+    try { journal.groups[i].remove(); } catch (e1) { ok = false; }
+  }
+  for (i = journal.layers.length - 1; i >= 0; i--) {
+    try { journal.layers[i].remove(); } catch (e2) { ok = false; }
+  }
+  for (i = journal.saved.length - 1; i >= 0; i--) {
+    try {
+      var s = journal.saved[i];
+      dformer_setPoints(s.item, s.path);
+      for (var j = 0; j < s.types.length; j++) s.item.pathPoints[j].pointType = s.types[j];
+    } catch (e3) { ok = false; }
+  }
+  return ok;
+}
+
+/**
+ * Write the panel's results into the active document (see BRIDGE.md). Validates everything first.
+ * @param {*} payload JSON text or an object
+ * @returns {string}
+ */
+function dformer_apply(payload) {
+  return dformer_run(function () {
+    var doc = dformer_doc();
+    var req = typeof payload === "string" ? dformer_parse(payload) : payload;
+    var plan = dformer_plan(doc, req);
+    return dformer_write(doc, plan);
+  });
+}

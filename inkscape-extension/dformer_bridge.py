@@ -1,0 +1,95 @@
+"""The bridge to the D-former geometry core: the ``dformer`` command speaking JSON.
+
+All geometry (path parsing, arc length, normalization, connectors) happens in the Rust core;
+this module only finds the ``dformer`` binary, sends it a batch of requests on stdin and reads
+the answers. A request is ``{"op": <contract function>, <argument>: <value>, ...}`` and the
+answer is the function's result, or ``{"error": <the core's message>}``.
+
+The binary is looked up in this order:
+
+1. the ``DFORMER_BIN`` environment variable (a full path);
+2. ``dformer`` / ``dformer.exe`` next to this file (where the install step copies it);
+3. ``dformer`` on ``PATH``.
+"""
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+EXE = "dformer.exe" if sys.platform.startswith("win") else "dformer"
+
+
+class CoreError(Exception):
+    """A message for the user: the core's own error text, or why the core could not run."""
+
+
+def find_binary():
+    """Returns the path of the ``dformer`` binary, or raises CoreError saying how to install it."""
+    explicit = os.environ.get("DFORMER_BIN")
+    if explicit:
+        if os.path.isfile(explicit):
+            return explicit
+        raise CoreError(f"DFORMER_BIN is set to {explicit!r}, but there is no file there.")
+    beside = os.path.join(HERE, EXE)
+    if os.path.isfile(beside):
+        return beside
+    on_path = shutil.which("dformer")
+    if on_path:
+        return on_path
+    raise CoreError(
+        f"The D-former core program ({EXE}) was not found next to the extension ({HERE}) "
+        "or on PATH. Build it with `cargo build --release -p dformer-cli` and copy "
+        f"target/release/{EXE} into {HERE} (see the D-former README, Inkscape section)."
+    )
+
+
+def run_batch(requests):
+    """Sends a list of requests in one process; returns the list of answers (each a result
+    or ``{"error": message}``), in order."""
+    if not requests:
+        return []
+    binary = find_binary()
+    try:
+        proc = subprocess.run(
+            [binary, "json"],
+            input=json.dumps(requests).encode("utf-8"),
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            check=False,
+            timeout=120,
+        )
+    except (OSError, subprocess.SubprocessError) as err:
+        raise CoreError(f"Could not run the D-former core program {binary}: {err}") from err
+    try:
+        answers = json.loads(proc.stdout.decode("utf-8"))
+    except ValueError as err:
+        detail = proc.stderr.decode("utf-8", "replace").strip()
+        raise CoreError(
+            f"The D-former core program {binary} gave no readable answer "
+            f"(exit status {proc.returncode}). {detail}"
+        ) from err
+    if isinstance(answers, dict) and "error" in answers:
+        # The whole batch was refused (e.g. not JSON): one message for everything.
+        raise CoreError(answers["error"])
+    if not isinstance(answers, list) or len(answers) != len(requests):
+        raise CoreError(f"The D-former core program {binary} answered {len(requests)} requests unexpectedly.")
+    return answers
+
+
+def call_all(requests):
+    """Like run_batch, but raises CoreError with the first error message."""
+    answers = run_batch(requests)
+    for answer in answers:
+        if isinstance(answer, dict) and "error" in answer:
+            raise CoreError(answer["error"])
+    return answers
+
+
+def call(op, **args):
+    """One contract function, e.g. ``call("measure", path=p)``; raises CoreError on failure."""
+    request = dict(args)
+    request["op"] = op
+    return call_all([request])[0]

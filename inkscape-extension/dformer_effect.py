@@ -1,0 +1,83 @@
+"""What every D-former effect shares: lengths in the user's unit, selection reading, and the
+rule that the document is only written after everything has been computed.
+
+Each effect implements ``compute()`` (reads the document, calls the core, returns a function
+that writes the result). Any ``CoreError`` — a message from the core or from the selection
+checks — becomes ``inkex.AbortExtension``: Inkscape shows it as an error and, because the
+writer never ran, the document is unchanged.
+"""
+
+import inkex
+
+from dformer_bridge import CoreError
+from dformer_pieces import describe, selected_shapes
+
+UNITS = ("mm", "cm", "in", "pt", "pc", "px")
+
+
+class DformerEffect(inkex.EffectExtension):
+    """Base class: subclasses define ``compute(self)`` returning a no-argument writer."""
+
+    #: (minimum, maximum) number of pieces the effect works on; None = no maximum.
+    piece_count = (1, None)
+
+    def add_arguments(self, pars):
+        pars.add_argument("--tab", default="", help="Notebook page (ignored)")
+        pars.add_argument(
+            "--unit",
+            default="document",
+            help="Unit of every length option and of reported lengths: document, mm, cm, in, pt, pc, px",
+        )
+
+    # -- units -------------------------------------------------------------------------------
+
+    def unit(self):
+        """The unit the user works in: the option, or the document's display unit."""
+        unit = self.options.unit
+        if unit == "document":
+            unit = self.svg.document_unit or "px"
+        if unit not in UNITS:
+            raise CoreError(f"Unit {unit!r} is not one of {', '.join(UNITS)}.")
+        return unit
+
+    def to_user(self, value):
+        """A length in the user's unit -> document user units (through viewBox scaling)."""
+        return self.svg.viewport_to_unit(f"{value}{self.unit()}")
+
+    def from_user(self, value):
+        """Document user units -> the user's unit."""
+        return self.svg.unit_to_viewport(value, self.unit())
+
+    def fmt(self, value):
+        """A length in user units written for a message, e.g. ``314.159 mm``."""
+        return f"{self.from_user(value):.4f} {self.unit()}"
+
+    # -- selection ---------------------------------------------------------------------------
+
+    def pieces(self):
+        """The selected shapes (selection order), checked against ``piece_count``."""
+        shapes, refused = selected_shapes(self.svg)
+        if refused:
+            names = ", ".join(describe(e) for e in refused)
+            raise CoreError(f"D-former works on paths and shapes; it cannot use {names}.")
+        low, high = self.piece_count
+        want = f"exactly {low}" if low == high else f"at least {low}" if high is None else f"{low} to {high}"
+        if len(shapes) < low or (high is not None and len(shapes) > high):
+            raise CoreError(
+                f"Select {want} closed path{'s' if (high or low) != 1 else ''} "
+                f"(or groups of them); {len(shapes)} selected."
+            )
+        return shapes
+
+    # -- the effect --------------------------------------------------------------------------
+
+    def compute(self):
+        raise NotImplementedError
+
+    def effect(self):
+        try:
+            write = self.compute()
+        except CoreError as err:
+            raise inkex.AbortExtension(str(err)) from err
+        if write is not None:
+            write()

@@ -1,0 +1,141 @@
+"""Selected Inkscape objects <-> the core's path JSON, in document user units.
+
+SVG handling is inkex's: shapes become path data with ``ShapeElement.get_path()`` (rect,
+circle, ellipse, polygon, path), nested group transforms with ``composed_transform()``. The
+path data itself is parsed by the core (``pathFromSvg``) and written by it (``pathToSvg``), so
+the extension and the ``dformer`` batch command read SVG curves identically.
+
+Every piece lives in *document user units* (the root viewBox coordinates): the element's
+local coordinates mapped through its composed transform. Bezier curves are affine-invariant,
+so mapping anchors and handles maps the curve exactly; results are mapped back through the
+inverse transform when an element is updated in place.
+"""
+
+import inkex
+
+from dformer_bridge import CoreError, call_all
+
+#: inkex classes that can be D-form pieces (closed outlines). Polyline and Line are accepted
+#: so that the core can say the outline is open, rather than the extension ignoring them.
+SHAPES = (
+    inkex.PathElement,
+    inkex.Rectangle,
+    inkex.Circle,
+    inkex.Ellipse,
+    inkex.Polygon,
+    inkex.Polyline,
+    inkex.Line,
+)
+
+#: Geometry attributes a shape loses when it is rewritten as a <path>.
+GEOMETRY_ATTRS = ("x", "y", "width", "height", "rx", "ry", "cx", "cy", "r", "points", "x1", "y1", "x2", "y2")
+
+#: Id prefix of everything D-former writes (layers and groups); never read back as a piece.
+OWN_PREFIX = "dformer-"
+
+
+def describe(elem):
+    """How messages name an element: its id and, when set, its label."""
+    label = elem.label
+    return f"#{elem.get_id()}" + (f" ({label})" if label and label != elem.get_id() else "")
+
+
+def is_own_output(elem):
+    """True for anything inside a layer or group that D-former wrote."""
+    node = elem
+    while node is not None and isinstance(node, inkex.BaseElement):
+        if (node.get("id") or "").startswith(OWN_PREFIX):
+            return True
+        node = node.getparent()
+    return False
+
+
+def selected_shapes(svg):
+    """The selected shapes in selection order, groups opened (their shapes in document order).
+    Text, images, clones and D-former's own output are left out; the caller checks the count."""
+    shapes, refused = [], []
+    for elem in svg.selection.values():
+        candidates = [elem] if not isinstance(elem, inkex.Group) else list(elem.descendants())
+        for cand in candidates:
+            if is_own_output(cand) or isinstance(cand, inkex.Group):
+                continue
+            if isinstance(cand, SHAPES):
+                if cand not in shapes:
+                    shapes.append(cand)
+            elif isinstance(cand, inkex.ShapeElement) and cand is elem:
+                refused.append(cand)
+    return shapes, refused
+
+
+def check_editable(elem):
+    """Refuses objects whose outline Inkscape regenerates from other data."""
+    if elem.get("inkscape:path-effect") or elem.get("inkscape:original-d"):
+        raise CoreError(
+            f"{describe(elem)} has a live path effect, so its outline cannot be changed directly. "
+            "Use Path > Object to Path on it first."
+        )
+
+
+def to_doc(path, transform):
+    """Maps a core path through an inkex Transform (anchors and handles: exact for Beziers)."""
+    def tr(p):
+        if p is None:
+            return None
+        q = transform.apply_to_point(p)
+        return [q.x, q.y]
+
+    return {
+        "closed": path.get("closed", False),
+        "points": [
+            {k: tr(pt.get(k)) for k in ("anchor", "left", "right") if pt.get(k) is not None}
+            for pt in path["points"]
+        ],
+    }
+
+
+def read_pieces(shapes):
+    """One core path per shape, in document user units. A shape must be one outline: several
+    subpaths (a compound path) is an error naming the shape."""
+    local_d = []
+    for elem in shapes:
+        check_editable(elem)
+        local_d.append(str(elem.path.to_absolute()))
+    answers = call_all([{"op": "pathFromSvg", "d": d} for d in local_d])
+    pieces = []
+    for elem, subpaths in zip(shapes, answers):
+        if len(subpaths) != 1:
+            raise CoreError(
+                f"{describe(elem)} has {len(subpaths)} subpaths; a D-form piece must be one outline. "
+                "Use Path > Break Apart and select the outlines themselves."
+            )
+        pieces.append(to_doc(subpaths[0], elem.composed_transform()))
+    return pieces
+
+
+def path_data(paths_in_doc, elems):
+    """SVG path data for each path, in the local coordinates of the matching element
+    (``None`` element: document coordinates)."""
+    local = [
+        to_doc(p, -e.composed_transform()) if e is not None else p
+        for p, e in zip(paths_in_doc, elems)
+    ]
+    return call_all([{"op": "pathToSvg", "path": p} for p in local])
+
+
+def replace_outline(elem, d):
+    """Gives ``elem`` the outline ``d`` (local coordinates), keeping its id, style, transform
+    and label. A rect/circle/ellipse/polygon becomes a <path>; Inkscape's own shape data
+    (sodipodi:type arcs and stars) is dropped so Inkscape does not regenerate the old shape."""
+    if isinstance(elem, inkex.PathElement):
+        for key in list(elem.attrib):
+            if key.startswith("{%s}" % inkex.NSS["sodipodi"]):
+                del elem.attrib[key]
+        elem.set("d", d)
+        return elem
+    new = inkex.PathElement()
+    for key, value in elem.attrib.items():
+        if key not in GEOMETRY_ATTRS:
+            new.set(key, value)
+    new.set("d", d)
+    elem.replace_with(new)
+    return new

@@ -1,0 +1,310 @@
+// The real dformer-bridge.jsx run in the simulated Illustrator DOM through the CSInterface stand-in.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import { createHost } from './jsx-host.mjs';
+import { PointType } from './sim/enums.mjs';
+
+const call = (h, fn, arg) => {
+  const src = arg === undefined ? `${fn}()` : `${fn}(${JSON.stringify(JSON.stringify(arg))})`;
+  const text = h.evalScript(src);
+  assert.notEqual(text, 'EvalScript error.', `${fn} threw instead of answering`);
+  return JSON.parse(text);
+};
+
+const blob = { closed: true, points: [
+  { anchor: [0, 0], left: [-30, 40], right: [50, -20] },
+  { anchor: [100, 10], left: [80, -40], right: [140, 60] },
+  { anchor: [40, 90], left: [90, 120], right: [0, 70] },
+] };
+
+function twoShapes(extra = {}) {
+  return createHost({
+    units: 'mm',
+    shapes: [
+      { name: 'A', path: blob },
+      { name: 'B', ellipse: { top: 300, left: 200, width: 120, height: 80 } },
+    ],
+    ...extra,
+  });
+}
+
+test('JSON writer/reader agree with the platform JSON on varied values', () => {
+  const h = createHost();
+  const values = [
+    0, -0, 1e-300, 5e-324, 1.7976931348623157e308, 0.1 + 0.2, -123.456e-7, 1 / 3,
+    '', 'plain', 'quote " backslash \\ slash / tab \t newline \n cr \r', '\u0001\u001f', 'é ü 漢字 😀', '\u2028\u2029',
+    true, false, null, [], {}, [1, [2, [3, { a: [] }]]], { 'key with "quotes"': { nested: [null, true, 'x'] } },
+  ];
+  let seed = 7;
+  const rnd = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  for (let i = 0; i < 200; i++) values.push((rnd() - 0.5) * 10 ** Math.floor(rnd() * 40 - 20));
+  for (const v of values) {
+    const ours = h.context.dformer_stringify(v);
+    assert.deepEqual(JSON.parse(ours), JSON.parse(JSON.stringify(v)), `stringify ${JSON.stringify(v)} → ${ours}`);
+    const back = h.context.dformer_parse(JSON.stringify(v));
+    assert.deepEqual(JSON.parse(JSON.stringify(back)), JSON.parse(JSON.stringify(v)), `parse ${JSON.stringify(v)}`);
+  }
+  for (const bad of ['{', '[1,]', '{"a":1,}', '01', '1.', '"\\x"', 'tru', '{"a" 1}', '"a\nb"', '[1] 2', 'NaN', '']) {
+    assert.throws(() => h.context.dformer_parse(bad), (e) => /malformed data/.test(e.dformer), `should reject ${JSON.stringify(bad)}`);
+  }
+});
+
+test('dformer_units maps every ruler unit and its points per unit', () => {
+  const want = { mm: ['mm', 72 / 25.4], cm: ['cm', 720 / 25.4], in: ['in', 72], pt: ['pt', 1], px: ['px', 1], pc: ['pc', 12],
+    q: ['mm', 72 / 25.4], m: ['mm', 72 / 25.4], ft: ['in', 72], yd: ['in', 72], unknown: ['pt', 1] };
+  for (const [units, [name, ppu]] of Object.entries(want)) {
+    const r = call(createHost({ units }), 'dformer_units');
+    assert.equal(r.ok, true);
+    assert.equal(r.units, name, `units for ${units}`);
+    assert.equal(r.pointsPerUnit, ppu, `pointsPerUnit for ${units}`);
+  }
+  const none = call(createHost({ noDocument: true }), 'dformer_units');
+  assert.deepEqual(none, { ok: false, error: 'No document is open. Open or create a document, then select two paths.' });
+  assert.equal(call(createHost({ noDocument: true }), 'dformer_info').hasDocument, false);
+});
+
+test('selection reads back as core paths in points, y up, with ids, names and anchor selection', () => {
+  const h = twoShapes();
+  h.find('A').pathPoints[1].selected = h.context.PathPointSelection.NOSELECTION;
+  const r = call(h, 'dformer_selection');
+  assert.equal(r.ok, true);
+  assert.equal(r.units, 'mm');
+  assert.equal(r.items.length, 2);
+  const A = r.items.find((x) => x.name === 'A');
+  const B = r.items.find((x) => x.name === 'B');
+  assert.deepEqual(A.path, blob, 'path A exactly as drawn');
+  assert.deepEqual(A.selectedAnchors, [0, 2]);
+  assert.equal(A.allSelected, false);
+  assert.equal(B.allSelected, true);
+  assert.equal(B.path.points.length, 4);
+  const bItem = h.find('B');
+  B.path.points.forEach((q, i) => assert.deepEqual(q.anchor, bItem.pathPoints[i].anchor, `B point ${i}`));
+  assert.equal(A.length, h.find('A').length, 'length is Illustrator\'s PathItem.length');
+  assert.match(A.id, /^u:/);
+  assert.deepEqual(r.skipped, []);
+});
+
+test('selection rules: groups descended, one-sub-path compound unwrapped, others skipped with reasons', () => {
+  const h = createHost({ shapes: [
+    { name: 'in group', rect: { top: 0, left: 0, width: 10, height: 10 }, group: 'G' },
+    { name: 'clip', rect: { top: 0, left: 0, width: 10, height: 10 }, group: 'G', clipping: true },
+    { name: 'single compound', kind: 'compound', polygon: [[0, 0], [5, 0], [5, 5]] },
+    { name: 'donut', kind: 'compound', polygon: [[0, 0], [9, 0], [9, 9]], more: [[[1, 1], [2, 1], [2, 2]]] },
+    { name: 'open line', polygon: [[0, 0], [5, 5], [9, 0]], closed: false },
+    { name: 'stray', polygon: [[3, 3]] },
+    { name: 'words', kind: 'text' },
+    { name: 'photo', kind: 'RasterItem' },
+    { name: 'sym', kind: 'SymbolItem' },
+    { name: 'not selected', rect: { top: 0, left: 0, width: 1, height: 1 }, selected: false },
+  ] });
+  const r = call(h, 'dformer_selection');
+  assert.deepEqual(r.items.map((x) => x.name).sort(), ['<Path>', 'in group', 'open line'].sort(),
+    'the single compound\'s sub-path is unnamed; the open path is included');
+  assert.equal(r.items.find((x) => x.name === 'open line').path.closed, false);
+  const reasons = Object.fromEntries(r.skipped.map((s) => [s.name, s.reason]));
+  assert.match(reasons.clip, /clipping path/);
+  assert.match(reasons.donut, /compound path with 2 sub-paths: release it/);
+  assert.match(reasons.stray, /single anchor point/);
+  assert.match(reasons.words, /text frame.*Create Outlines/);
+  assert.match(reasons.photo, /image/);
+  assert.match(reasons.sym, /symbol/);
+  assert.equal(Object.keys(reasons).length, 6);
+});
+
+test('no selection → ok with no items; selectionKey changes when geometry or anchor selection changes', () => {
+  const h = twoShapes();
+  const k1 = call(h, 'dformer_selectionKey').key;
+  h.find('B').translate(1, 0);
+  const k2 = call(h, 'dformer_selectionKey').key;
+  assert.notEqual(k1, k2, 'moving a path changes the key');
+  h.find('A').pathPoints[0].selected = h.context.PathPointSelection.NOSELECTION;
+  const k3 = call(h, 'dformer_selectionKey').key;
+  assert.notEqual(k2, k3, 'anchor selection changes the key');
+  assert.equal(call(h, 'dformer_selectionKey').key, k3, 'stable when nothing changes');
+  h.doc.selection = null;
+  assert.deepEqual(call(h, 'dformer_selection').items, []);
+});
+
+/** A payload like the panel's: scale A about its first anchor, one piece per path with holes/labels/marks. */
+function payloadFor(sel, scale = 1.1) {
+  const A = sel.items.find((x) => x.name === 'A');
+  const B = sel.items.find((x) => x.name === 'B');
+  const o = A.path.points[0].anchor;
+  const s = (p) => [o[0] + (p[0] - o[0]) * scale, o[1] + (p[1] - o[1]) * scale];
+  const scaled = { closed: true, points: A.path.points.map((q) => ({ anchor: s(q.anchor), left: s(q.left), right: s(q.right) })) };
+  const hole = (x, y) => ({ center: [x, y], diameter: 2, path: { closed: true, points: [
+    { anchor: [x + 1, y], left: [x + 1, y - 0.55], right: [x + 1, y + 0.55] },
+    { anchor: [x, y + 1], left: [x + 0.55, y + 1], right: [x - 0.55, y + 1] },
+    { anchor: [x - 1, y], left: [x - 1, y + 0.55], right: [x - 1, y - 0.55] },
+    { anchor: [x, y - 1], left: [x - 0.55, y - 1], right: [x + 0.55, y - 1] },
+  ] } });
+  const piece = (id, name, base) => ({
+    id, name,
+    holes: [hole(base, 10), hole(base + 10, 10), hole(base + 20, 10).path],
+    labels: [{ text: '1', at: [base, 20], angle: 0 }, { text: '2', at: [base + 10, 20], angle: 45, size: 9 }],
+    marks: [{ closed: false, points: [{ anchor: [base, 0] }, { anchor: [base, 5] }] }],
+  });
+  return {
+    document: sel.document,
+    updates: [{ id: A.id, path: scaled }],
+    pieces: [piece(A.id, 'piece A', 0), piece(B.id, 'piece B', 100)],
+    layers: { cut: { name: 'Laser cut', color: [255, 0, 0], width: 0.01 }, score: { color: [0, 0, 255] } },
+  };
+}
+
+test('apply updates in place (same PathItem, count, appearance) and writes pieces on named, grouped layers', () => {
+  const h = twoShapes();
+  const sel = call(h, 'dformer_selection');
+  const A = h.find('A');
+  A.strokeWidth = 3;
+  A.fillColor.red = 12;
+  const payload = payloadFor(sel);
+  const r = call(h, 'dformer_apply', payload);
+  assert.equal(r.ok, true, r.error);
+  assert.equal(r.updated, 1);
+  assert.equal(r.created, 2 * (3 + 2 + 1), 'holes + labels + marks of both pieces');
+  assert.deepEqual(r.layers, ['Laser cut', 'Score', 'Engrave']);
+
+  assert.equal(h.find('A'), A, 'same object: updated in place');
+  assert.equal(A.pathPoints.length, 3);
+  assert.equal(A.strokeWidth, 3, 'appearance kept');
+  assert.equal(A.fillColor.red, 12, 'appearance kept');
+  payload.updates[0].path.points.forEach((q, i) => {
+    assert.deepEqual(A.pathPoints[i].anchor, q.anchor, `anchor ${i}`);
+    assert.deepEqual(A.pathPoints[i].leftDirection, q.left, `left ${i}`);
+    assert.deepEqual(A.pathPoints[i].rightDirection, q.right, `right ${i}`);
+  });
+
+  const layer = (name) => h.doc.layers.getByName(name);
+  const cut = layer('Laser cut').groupItems.getByName('D-former piece A connectors');
+  assert.equal(cut.pathItems.length, 3);
+  const hole1 = cut.pathItems.getByName('hole 1');
+  assert.deepEqual(hole1.pathPoints[1].anchor, [0, 11]);
+  assert.deepEqual(hole1.pathPoints[1].leftDirection, [0.55, 11]);
+  assert.equal(hole1.pathPoints[1].pointType, PointType.SMOOTH, 'collinear opposite handles → smooth');
+  assert.equal(hole1.closed, true);
+  assert.equal(hole1.filled, false);
+  assert.equal(hole1.stroked, true);
+  assert.equal(hole1.strokeWidth, 0.01);
+  assert.deepEqual([hole1.strokeColor.red, hole1.strokeColor.green, hole1.strokeColor.blue], [255, 0, 0]);
+
+  const marks = layer('Score').groupItems.getByName('D-former piece B marks');
+  const mark = marks.pathItems.getByName('start mark');
+  assert.equal(mark.closed, false);
+  assert.deepEqual(mark.pathPoints[1].anchor, [100, 5]);
+  assert.equal(mark.strokeWidth, 0.072, 'default hairline kept where the panel gave none');
+  assert.deepEqual([mark.strokeColor.red, mark.strokeColor.green, mark.strokeColor.blue], [0, 0, 255]);
+  assert.equal(mark.pathPoints[0].pointType, PointType.CORNER);
+
+  const labels = layer('Engrave').groupItems.getByName('D-former piece B labels');
+  const l2 = labels.textFrames.getByName('label 2');
+  assert.equal(l2.contents, '2');
+  assert.equal(l2.rotation, 45);
+  assert.equal(l2.textRange.characterAttributes.size, 9);
+  assert.equal(String(l2.textRange.paragraphAttributes.justification), 'Justification.CENTER');
+  const c = l2._center();
+  assert.ok(Math.hypot(c[0] - 110, c[1] - 20) < 1e-9, `label centre at [110, 20], got ${c}`);
+  assert.equal(labels.textFrames.getByName('label 1').textRange.characterAttributes.size, 6, 'default label size');
+});
+
+test('re-applying replaces the previous D-former groups instead of stacking duplicates', () => {
+  const h = twoShapes();
+  const sel = call(h, 'dformer_selection');
+  const p = payloadFor(sel);
+  delete p.updates;
+  assert.equal(call(h, 'dformer_apply', p).ok, true);
+  assert.equal(call(h, 'dformer_apply', p).ok, true);
+  const cut = h.doc.layers.getByName('Laser cut');
+  assert.deepEqual(cut.groupItems.length, 2, 'one connectors group per piece');
+  p.replace = false;
+  assert.equal(call(h, 'dformer_apply', p).ok, true);
+  assert.deepEqual(cut.groupItems.length, 4, 'replace:false keeps the old groups');
+});
+
+test('an invalid apply changes nothing in the document and says what is wrong', () => {
+  const cases = [
+    ['unknown id', (p) => { p.updates[0].id = 'u:999999'; }, /updates\[0\]: the path \(u:999999\) is no longer in the document/],
+    ['not an id', (p) => { p.pieces[1].id = 'xyz'; }, /pieces\[1\]: "xyz" is not a D-former path id/],
+    ['NaN coordinate (object payload)', (p) => { p.pieces[1].holes[2].points[3].anchor[1] = NaN; }, /pieces\[1\] \("piece B"\) holes\[2\] point 3 anchor y: expected a finite number, got NaN/],
+    ['null coordinate (what JSON makes of NaN)', (p) => { p.updates[0].path.points[2].left = [1, null]; }, /updates\[0\] \("A"\) point 2 left y: expected a finite number, got null/],
+    ['Infinity in a label', (p) => { p.pieces[0].labels[1].at = [Infinity, 0]; }, /labels\[1\] at x: expected a finite number, got Infinity/],
+    ['point count changed', (p) => { p.updates[0].path.points.pop(); }, /has 3 anchors in Illustrator but the new path has 2/],
+    ['same path twice', (p) => { p.updates.push(p.updates[0]); }, /updated twice/],
+    ['other document', (p) => { p.document = 'Other.ai'; }, /active document is "Untitled-1.ai", not "Other.ai"/],
+    ['bad colour', (p) => { p.layers.engrave = { color: [0, 0, 300] }; }, /layers.engrave.color: colour components go from 0 to 255, got 300/],
+    ['zero width', (p) => { p.layers.cut.width = 0; }, /layers.cut.width: stroke width must be greater than 0/],
+    ['one-point hole', (p) => { p.pieces[0].holes[0] = { closed: true, points: [{ anchor: [0, 0] }] }; }, /holes\[0\]: a path needs at least 2 points, got 1/],
+    ['label without text', (p) => { delete p.pieces[0].labels[0].text; }, /labels\[0\]: text must be a string/],
+    ['duplicate piece names', (p) => { p.pieces[1].name = 'piece A'; }, /two pieces are both named "piece A"/],
+  ];
+  for (const [what, spoil, message] of cases) {
+    const h = twoShapes();
+    const sel = call(h, 'dformer_selection');
+    const p = payloadFor(sel);
+    spoil(p);
+    const before = h.snapshot();
+    // Object-literal payload (NaN/Infinity survive), like evalScript('dformer_apply(' + literal + ')').
+    const literal = JSON.stringify(p, (k, v) => (typeof v === 'number' && !Number.isFinite(v) ? `@@${v}@@` : v)).replace(/"@@(.*?)@@"/g, '$1');
+    const r = JSON.parse(h.evalScript(`dformer_apply(${literal})`));
+    assert.equal(r.ok, false, `${what}: should be refused`);
+    assert.match(r.error, message, `${what}: message`);
+    assert.deepEqual(h.snapshot(), before, `${what}: document must be unchanged`);
+  }
+});
+
+test('locked target layer or locked path: refused before any write', () => {
+  const h = twoShapes();
+  const sel = call(h, 'dformer_selection');
+  const p = payloadFor(sel);
+  h.doc.layers.add().name = 'Engrave';
+  h.doc.layers.getByName('Engrave').locked = true;
+  let before = h.snapshot();
+  let r = call(h, 'dformer_apply', p);
+  assert.match(r.error, /Layer "Engrave" is locked; unlock and show it/);
+  assert.deepEqual(h.snapshot(), before);
+  h.doc.layers.getByName('Engrave').locked = false;
+  h.find('A').locked = true;
+  before = h.snapshot();
+  r = call(h, 'dformer_apply', p);
+  assert.match(r.error, /updates\[0\] \("A"\): cannot change the path because it is locked/);
+  assert.deepEqual(h.snapshot(), before);
+});
+
+test('if Illustrator throws midway, the bridge undoes what it wrote', () => {
+  for (const fault of ['textFrames.add', 'PathPoint.rightDirection', 'layers.add', 'TextFrame.remove', 'GroupItem.remove']) {
+    const h = twoShapes();
+    const sel = call(h, 'dformer_selection');
+    const p = payloadFor(sel);
+    if (fault.endsWith('.remove')) { delete p.updates; call(h, 'dformer_apply', p); }
+    const before = h.snapshot();
+    // Fail on a late call: after the in-place update and some created items (remove faults hit the replace step).
+    h.sim.faults[fault] = fault === 'PathPoint.rightDirection' ? 7 : fault === 'layers.add' ? 2 : 1;
+    const r = call(h, 'dformer_apply', p);
+    if (fault === 'TextFrame.remove') { assert.equal(r.ok, true, 'replace removes groups, not frames'); continue; }
+    assert.equal(r.ok, false, `${fault}: error expected`);
+    assert.match(r.error, /Illustrator reported an error while writing: simulated failure in .* \(the changes were undone\)/);
+    assert.deepEqual(h.snapshot(), before, `${fault}: document restored`);
+  }
+});
+
+test('Illustrator 22–23 (no uuid): positional ids work and go stale when the stacking order changes', () => {
+  const h = twoShapes({ uuid: false });
+  const sel = call(h, 'dformer_selection');
+  const A = sel.items.find((x) => x.name === 'A');
+  assert.match(A.id, /^p:L0\/\d+#3$/);
+  assert.equal(call(h, 'dformer_apply', payloadFor(sel)).ok, true);
+  // Apply added layers on top: layer indices moved, the old ids must be refused, not misapplied.
+  const r = call(h, 'dformer_apply', payloadFor(sel));
+  assert.match(r.error, /no longer in the document or changed since it was read; select the paths again/);
+  const again = call(h, 'dformer_selection');
+  assert.equal(call(h, 'dformer_apply', payloadFor(again)).ok, true, 'fresh ids work');
+});
+
+test('apply accepts a JSON string and reports malformed data', () => {
+  const h = twoShapes();
+  const sel = call(h, 'dformer_selection');
+  assert.equal(call(h, 'dformer_apply', payloadFor(sel)).ok, true);
+  const r = JSON.parse(h.evalScript('dformer_apply("{\\"updates\\": [}")'));
+  assert.equal(r.ok, false);
+  assert.match(r.error, /malformed data \(unexpected character at character 13\)/);
+});

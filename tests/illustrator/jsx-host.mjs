@@ -1,0 +1,167 @@
+// Runs the real ExtendScript files of illustrator-scripts/ in Node's `vm`, against the simulated
+// Illustrator DOM of ./sim. `createHost(...).evalScript(src)` behaves like CEP's
+// CSInterface.evalScript: it returns the script's value as a string, "EvalScript error." if it throws.
+// Documented for other helpers in illustrator-scripts/BRIDGE.md.
+import fs from 'node:fs';
+import path from 'node:path';
+import vm from 'node:vm';
+import { fileURLToPath } from 'node:url';
+import * as E from './sim/enums.mjs';
+import { Application, CompoundPathItem, GroupItem, NoColor, OtherItem, PathItem, RGBColor, Sim, TextFrame, ellipsePoints } from './sim/dom.mjs';
+import { makeWindowClass } from './sim/scriptui.mjs';
+
+export const SCRIPTS_DIR = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../illustrator-scripts');
+export const BRIDGE = path.join(SCRIPTS_DIR, 'dformer-bridge.jsx');
+
+function corner(a) { return { anchor: a, left: a, right: a }; }
+
+/** Add one described shape to the simulated document; returns the created item. */
+function addShape(sim, doc, s) {
+  let layer = doc._layers.find((l) => l.name === (s.layer || 'Layer 1'));
+  if (!layer) { layer = doc.layers.add(); layer.name = s.layer; }
+  let container = layer;
+  if (s.group) {
+    container = layer._items.find((g) => g instanceof GroupItem && g.name === s.group);
+    if (!container) {
+      container = new GroupItem(sim);
+      container.name = s.group;
+      container._parent = layer;
+      layer._items.unshift(container);
+    }
+  }
+  let item;
+  if (s.kind && s.kind !== 'path' && s.kind !== 'compound') {
+    item = s.kind === 'text' ? new TextFrame(sim) : new OtherItem(sim, s.kind);
+    if (s.kind === 'text') item.contents = s.text || 'text';
+  } else {
+    const p = new PathItem(sim);
+    let pts, closed = true;
+    if (s.path) { pts = s.path.points.map((q) => ({ anchor: q.anchor, left: q.left || q.anchor, right: q.right || q.anchor })); closed = s.path.closed !== false; }
+    else if (s.ellipse) pts = ellipsePoints(s.ellipse.top, s.ellipse.left, s.ellipse.width, s.ellipse.height, !!s.ellipse.reversed);
+    else if (s.rect) { const { top: t, left: l, width: w, height: h } = s.rect; pts = [[l, t], [l, t - h], [l + w, t - h], [l + w, t]].map(corner); }
+    else if (s.polygon) { pts = s.polygon.map(corner); closed = s.closed !== false; }
+    else throw new Error(`shape ${s.name}: give path, ellipse, rect or polygon`);
+    p._setPoints(pts);
+    p.closed = closed;
+    p.clipping = !!s.clipping;
+    p.guides = !!s.guides;
+    if (s.kind === 'compound') {
+      item = new CompoundPathItem(sim);
+      p._parent = item;
+      item._items.push(p);
+      for (const extra of s.more || []) {
+        const q = new PathItem(sim);
+        q._setPoints(extra.map(corner));
+        q.closed = true;
+        q._parent = item;
+        item._items.push(q);
+      }
+    } else item = p;
+  }
+  item.name = s.name || '';
+  item._parent = container;
+  container._items.unshift(item);
+  // Selection tool semantics: selecting a grouped shape selects its group; `directSelect` selects
+  // the shape itself inside its group (Direct Selection tool).
+  if (s.selected !== false) (container instanceof GroupItem && !s.directSelect ? container : item).selected = true;
+  if (s.selectedAnchors) {
+    for (let i = 0; i < item._points.length; i++) {
+      item._points[i]._sel = s.selectedAnchors.includes(i) ? E.PathPointSelection.ANCHORPOINT : E.PathPointSelection.NOSELECTION;
+    }
+  }
+  if (s.locked) item.locked = true;
+  if (s.hidden) item.hidden = true;
+  return item;
+}
+
+/**
+ * @param {object} o
+ * @param {string} [o.units='mm'] ruler units: mm cm in pt px pc q m ft yd unknown
+ * @param {boolean} [o.uuid=true] false = Illustrator 22–23 (no PageItem.uuid / getPageItemFromUuid)
+ * @param {boolean} [o.noDocument] no open document
+ * @param {boolean} [o.float32] store coordinates as 32-bit floats like Illustrator's AIReal
+ * @param {object[]} [o.shapes] {name, path|ellipse|rect|polygon, layer, group, selected, directSelect, selectedAnchors, kind, locked, hidden}
+ * @param {(win) => 1|2} [o.dialog] responder for ScriptUI dialogs of standalone scripts
+ * @param {string[]} [o.scripts] extra .jsx files (names in illustrator-scripts/) to load after the bridge
+ */
+export function createHost(o = {}) {
+  const sim = new Sim({ uuid: o.uuid !== false, units: o.noDocument ? null : (o.units || 'mm'), float32: !!o.float32, name: o.document || 'Untitled-1.ai' });
+  const doc = sim.documents[0] || null;
+  for (const s of o.shapes || []) addShape(sim, doc, s);
+  // The first created shape ends up at the bottom; fine for tests (they address shapes by name).
+  const alerts = [];
+  const dialogs = [];
+  const app = new Application(sim);
+  const host = { sim, app, doc, alerts, dialogs, respond: o.dialog || null };
+  const globals = {
+    app, RGBColor, NoColor,
+    PointType: E.PointType, PathPointSelection: E.PathPointSelection, Transformation: E.Transformation,
+    RulerUnits: E.RulerUnits, Justification: E.Justification,
+    alert: (m) => { alerts.push(String(m)); },
+    $: { writeln: () => {} },
+    Window: makeWindowClass((w) => (host.respond ? host.respond(w) : 2), dialogs),
+  };
+  const context = vm.createContext(globals);
+  host.context = context;
+  host.load = (file) => {
+    const full = path.isAbsolute(file) ? file : path.join(SCRIPTS_DIR, file);
+    vm.runInContext(fs.readFileSync(full, 'utf8'), context, { filename: full });
+  };
+  host.load(BRIDGE);
+  for (const f of o.scripts || []) host.load(f);
+  /** CSInterface.evalScript stand-in: the value as a string, "EvalScript error." on a throw. */
+  host.evalScript = (src) => {
+    try {
+      const r = vm.runInContext(String(src), context);
+      return r === undefined ? '' : String(r);
+    } catch {
+      return 'EvalScript error.';
+    }
+  };
+  /** Run a standalone File > Scripts script; `respond` answers its dialog. Returns the new alerts. */
+  host.runScript = (file, respond) => {
+    if (respond !== undefined) host.respond = respond;
+    const before = alerts.length;
+    host.load(file);
+    return alerts.slice(before);
+  };
+  host.find = (name) => {
+    const hit = doc._all().find((x) => x.name === name);
+    if (!hit) throw new Error(`no item named ${name}`);
+    return hit;
+  };
+  host.snapshot = () => snapshot(sim);
+  return host;
+}
+
+function color(c) {
+  if (!c) return null;
+  return c.typename === 'RGBColor' ? { rgb: [c.red, c.green, c.blue] } : { type: c.typename };
+}
+
+function item(it) {
+  const base = { typename: it.typename, name: it.name, uuid: it._uuid, locked: it.locked, hidden: it.hidden };
+  if (it instanceof PathItem) {
+    return {
+      ...base, closed: it.closed, filled: it.filled, stroked: it.stroked, strokeWidth: it.strokeWidth,
+      strokeColor: color(it.strokeColor), fillColor: color(it.fillColor), clipping: it.clipping, guides: it.guides,
+      points: it._points.map((p) => ({ a: p._a, l: p._l, r: p._r, type: String(p._type), sel: String(p._sel) })),
+    };
+  }
+  if (it instanceof TextFrame) {
+    const ca = it.textRange.characterAttributes;
+    return { ...base, contents: it.contents, anchor: it._anchor, rotation: it.rotation, size: ca.size, fill: color(ca.fillColor),
+      justification: String(it.textRange.paragraphAttributes.justification) };
+  }
+  if (it._items) return { ...base, clipped: it.clipped, items: it._items.map(item) };
+  return base;
+}
+
+function layer(l) {
+  return { name: l.name, locked: l.locked, visible: l.visible, color: color(l.color), items: l._items.map(item), layers: l._layers.map(layer) };
+}
+
+/** Plain JSON of every document: for deep comparison before/after a script. */
+export function snapshot(sim) {
+  return sim.documents.map((d) => ({ name: d.name, rulerUnits: String(d.rulerUnits), active: d._active && d._active.name, layers: d._layers.map(layer) }));
+}

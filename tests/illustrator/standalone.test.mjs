@@ -1,0 +1,94 @@
+// The File > Scripts scripts run in the simulated DOM; results checked with an independent length.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import { createHost } from './jsx-host.mjs';
+import { referenceLengthOf, relErr } from './reference-length.mjs';
+
+const MEASURE = 'D-former – Measure perimeters.jsx';
+const NORMALIZE = 'D-former – Normalize perimeters.jsx';
+const MM = 25.4 / 72;
+
+const shapes = () => [
+  { name: 'A', path: { closed: true, points: [
+    { anchor: [0, 0], left: [-30, 40], right: [50, -20] },
+    { anchor: [100, 10], left: [80, -40], right: [140, 60] },
+    { anchor: [40, 90], left: [90, 120], right: [0, 70] },
+  ] } },
+  { name: 'B', ellipse: { top: 300, left: 200, width: 120, height: 80 } },
+  { name: 'C', rect: { top: -50, left: -100, width: 60, height: 20 }, group: 'G' },
+];
+
+/** Fill the normalize dialog like a user: target index, exact text, pivot index; OK or Cancel. */
+const answer = (target, exact = '', pivot = 0, ok = true) => (w) => {
+  w.findElement('target').selection = target;
+  if (exact !== '') w.findElement('length').text = exact;
+  w.findElement('pivot').selection = pivot;
+  return ok ? 1 : 2;
+};
+
+test('Measure lists each perimeter in ruler units (independently measured) and the difference', () => {
+  const h = createHost({ units: 'mm', shapes: shapes() });
+  const [msg] = h.runScript(MEASURE);
+  for (const name of ['A', 'B', 'C']) {
+    const m = msg.match(new RegExp(`^${name}: ([0-9.]+) mm$`, 'm'));
+    assert.ok(m, `line for ${name} in:\n${msg}`);
+    const want = referenceLengthOf(h.find(name)) * MM;
+    assert.ok(Math.abs(Number(m[1]) - want) <= 0.0005, `${name}: wanted ${want.toFixed(3)} mm, got ${m[1]} mm`);
+  }
+  assert.match(msg, /Difference: [0-9.]+ mm \([0-9.]+ %\)\. Run "D-former – Normalize perimeters"/);
+  assert.equal(h.snapshot().length, 1);
+});
+
+test('Measure refuses politely without a document or selection and names skipped items', () => {
+  assert.match(createHost({ noDocument: true }).runScript(MEASURE)[0], /No document is open/);
+  const h = createHost({ shapes: [{ name: 'words', kind: 'text' }] });
+  assert.match(h.runScript(MEASURE)[0], /Select one or more paths first\.\nNot paths: words\./);
+});
+
+for (const [target, label] of [[0, 'largest'], [1, 'smallest'], [2, 'mean'], [3, 'first'], [4, 'exact 250 mm']]) {
+  test(`Normalize to the ${label} perimeter makes all perimeters equal (measured independently)`, () => {
+    const h = createHost({ units: 'mm', shapes: shapes() });
+    const items = ['A', 'B', 'C'].map((n) => h.find(n));
+    const before = items.map(referenceLengthOf);
+    const order = h.doc.selection.flatMap((x) => (x.typename === 'GroupItem' ? x._items : [x]));
+    const want = [Math.max(...before), Math.min(...before), before.reduce((a, b) => a + b) / 3,
+      referenceLengthOf(order[0]), 250 / MM][target];
+    const centres = items.map((it) => { const [l, t, r, b] = it.geometricBounds; return [(l + r) / 2, (t + b) / 2]; });
+    const [msg] = h.runScript(NORMALIZE, answer(target, target === 4 ? ' 250,0 ' : ''));
+    assert.match(msg, /^Target perimeter: /);
+    items.forEach((it, i) => {
+      const got = referenceLengthOf(it);
+      assert.ok(relErr(got, want) < 1e-9, `${it.name}: wanted ${want}, got ${got}`);
+      const [l, t, r, b] = it.geometricBounds;
+      assert.ok(Math.hypot((l + r) / 2 - centres[i][0], (t + b) / 2 - centres[i][1]) < 1e-9, `${it.name}: centre pivot kept`);
+    });
+  });
+}
+
+test('Normalize about the top-left pivot keeps each top-left corner', () => {
+  const h = createHost({ units: 'in', shapes: shapes() });
+  const corners = ['A', 'B'].map((n) => h.find(n).geometricBounds.slice(0, 2));
+  h.runScript(NORMALIZE, answer(0, '', 1));
+  ['A', 'B'].forEach((n, i) => {
+    const [l, t] = h.find(n).geometricBounds;
+    assert.ok(Math.hypot(l - corners[i][0], t - corners[i][1]) < 1e-9, `${n}: top-left ${corners[i]} kept, got ${[l, t]}`);
+  });
+});
+
+test('Normalize refuses bad selections and bad input, and Cancel changes nothing', () => {
+  const check = (opts, respond, pattern) => {
+    const h = createHost(opts);
+    const before = h.snapshot();
+    const alerts = h.runScript(NORMALIZE, respond);
+    if (pattern) assert.match(alerts.join('\n'), pattern);
+    else assert.deepEqual(alerts, [], 'no message on cancel');
+    assert.deepEqual(h.snapshot(), before, `document unchanged (${pattern})`);
+  };
+  check({ noDocument: true }, undefined, /No document is open/);
+  check({ shapes: [shapes()[0]] }, undefined, /Select at least two closed paths \(found 1\)/);
+  check({ shapes: [shapes()[0], { name: 'line', polygon: [[0, 0], [5, 5]], closed: false }] }, undefined,
+    /"line" is an open path\. A D-form needs closed outlines/);
+  check({ shapes: shapes() }, answer(4, 'abc'), /Enter an exact length greater than 0 in mm \(got "abc"\)\. Nothing was changed\./);
+  check({ shapes: shapes() }, answer(4, '-5'), /Enter an exact length greater than 0/);
+  check({ shapes: shapes() }, answer(0, '', 0, false), null);
+});

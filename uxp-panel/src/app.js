@@ -1,0 +1,377 @@
+/* D-former panel: the UI controller. Talks to the host only through the host interface
+ * (host-cep.js in Illustrator, host-browser.js in a browser; a UXP host module would plug in here),
+ * to the core only through core.js. Every parameter change recomputes the whole design and redraws
+ * the preview; Apply writes only a design that computed without error. */
+(function (DF) {
+  'use strict';
+  var MM = 72 / 25.4;
+  var DEFAULT_PARAMS = {
+    normalize: true, target: 'largest', exact: 0, pivot: 'center',
+    kind: 'stitch', spacing: 'count', count: 24, pitch: 10 * MM, slide: 0,
+    diameter: 2 * MM, inset: 4 * MM, length: 5 * MM, angle: 60, invert: false, kerf: 0,
+    start: [{ mode: 'first', anchor: 1, offset: 0 }, { mode: 'first', anchor: 1, offset: 0 }],
+  };
+
+  var $ = function (sel, root) { return (root || document).querySelector(sel); };
+  var $$ = function (sel, root) { return Array.prototype.slice.call((root || document).querySelectorAll(sel)); };
+
+  var host = null;
+  var settings = DF.settings.load();
+  var params = Object.assign({}, JSON.parse(JSON.stringify(DEFAULT_PARAMS)), settings.params || {});
+  if (!Array.isArray(params.start) || params.start.length !== 2) params.start = JSON.parse(JSON.stringify(DEFAULT_PARAMS.start));
+  var selection = { ok: true, pieces: [], units: 'mm', skipped: [] };
+  var design = null;
+  var unit = 'mm';
+  var pending = false;
+  var applying = false;
+
+  /** Length fields: where each value (points) lives. */
+  var LEN = {
+    exact: { get: function () { return params.exact; }, set: function (v) { params.exact = v; }, min: 0 },
+    pitch: { get: function () { return params.pitch; }, set: function (v) { params.pitch = v; }, min: 0 },
+    diameter: { get: function () { return params.diameter; }, set: function (v) { params.diameter = v; }, min: 0 },
+    inset: { get: function () { return params.inset; }, set: function (v) { params.inset = v; }, min: -Infinity },
+    length: { get: function () { return params.length; }, set: function (v) { params.length = v; }, min: 0 },
+    kerf: { get: function () { return params.kerf; }, set: function (v) { params.kerf = v; }, min: 0 },
+    offsetA: { get: function () { return params.start[0].offset; }, set: function (v) { params.start[0].offset = v; }, min: -Infinity },
+    offsetB: { get: function () { return params.start[1].offset; }, set: function (v) { params.start[1].offset = v; }, min: -Infinity },
+    wcut: { get: function () { return settings.layers.cut.width; }, set: function (v) { settings.layers.cut.width = v; }, min: 0, layer: true },
+    wscore: { get: function () { return settings.layers.score.width; }, set: function (v) { settings.layers.score.width = v; }, min: 0, layer: true },
+    wengrave: { get: function () { return settings.layers.engrave.width; }, set: function (v) { settings.layers.engrave.width = v; }, min: 0, layer: true },
+  };
+
+  function fmt(points) {
+    return DF.units.format(points, unit);
+  }
+  function lenText(points) {
+    var d = DF.units.DECIMALS[unit] + (Math.abs(DF.units.toUnits(points, unit)) < 1 && points !== 0 ? 1 : 0);
+    return String(parseFloat(DF.units.toUnits(points, unit).toFixed(d)));
+  }
+  function save() {
+    settings.params = params;
+    DF.settings.save(settings);
+  }
+
+  // ---------------------------------------------------------------- theme
+  function applyTheme(theme) {
+    var c = theme.background;
+    var body = document.body;
+    body.classList.toggle('theme-dark', theme.dark);
+    body.classList.toggle('theme-light', !theme.dark);
+    body.style.setProperty('--bg', 'rgb(' + c.join(',') + ')');
+    var shift = theme.dark ? -1 : 1;
+    function shade(k) {
+      return 'rgb(' + c.map(function (v) { return Math.max(0, Math.min(255, Math.round(v + shift * k))); }).join(',') + ')';
+    }
+    body.style.setProperty('--field', theme.dark ? shade(14) : 'rgb(255,255,255)');
+    body.style.setProperty('--raised', shade(-10));
+    body.style.setProperty('--line', shade(theme.dark ? -28 : 38));
+  }
+
+  // ---------------------------------------------------------------- view sync
+  function showUnits() {
+    $('#units-badge').textContent = unit;
+    $$('.u').forEach(function (s) {
+      if (s.textContent !== '°' && s.textContent !== 'pt') s.textContent = unit;
+    });
+    $$('.u').forEach(function (s) {
+      if (s.previousElementSibling && s.previousElementSibling.id === 'label-size') s.textContent = 'pt';
+    });
+    $$('input.len').forEach(function (input) {
+      if (document.activeElement !== input) input.value = lenText(LEN[input.dataset.len].get());
+      input.classList.remove('invalid');
+    });
+  }
+  function syncControls() {
+    $('#normalize-on').checked = params.normalize;
+    $('#norm-target').value = params.target;
+    $('#row-exact').hidden = params.target !== 'exact';
+    $('#norm-pivot').value = params.pivot;
+    $$('#sec-normalize .row').forEach(function (r) { r.classList.toggle('disabled', !params.normalize); });
+    $$('#kind button').forEach(function (b) {
+      var on = b.dataset.kind === params.kind;
+      b.classList.toggle('selected', on);
+      b.setAttribute('aria-checked', on ? 'true' : 'false');
+    });
+    $$('#sec-connectors .row[class*="k-"]').forEach(function (r) {
+      r.hidden = !r.classList.contains('k-' + params.kind);
+    });
+    $('#spacing').value = params.spacing;
+    $('#count').hidden = params.spacing !== 'count';
+    $('#pitch').hidden = $('#pitch-u').hidden = params.spacing !== 'pitch';
+    $('#count').value = params.count;
+    $('#slide').value = params.slide;
+    $('#slide-out').textContent = Number(params.slide).toFixed(2);
+    $('#angle').value = params.angle;
+    $('#invert').checked = params.invert;
+    $$('.start').forEach(function (row) {
+      var s = params.start[Number(row.dataset.piece)];
+      $('.start-mode', row).value = s.mode;
+      $('.start-anchor', row).value = s.anchor;
+      $('.start-anchor', row).hidden = s.mode !== 'anchor';
+    });
+    $$('.layer-row').forEach(function (row) {
+      var l = settings.layers[row.dataset.layer];
+      $('.layer-name', row).value = l.name;
+      $('.layer-color', row).value = l.color;
+    });
+    $('#label-size').value = settings.labelSize;
+    showUnits();
+  }
+
+  function renderMeasure() {
+    var tbody = $('#measure-table tbody');
+    tbody.innerHTML = '';
+    var ms = design ? design.measures : [];
+    ms.forEach(function (m, i) {
+      var tr = document.createElement('tr');
+      var key = selection.pieces.length === 2 ? ['A', 'B'][i] : String(i + 1);
+      tr.innerHTML = '<th></th><td class="name"></td><td class="perimeter"></td>';
+      tr.children[0].textContent = key;
+      tr.children[1].textContent = m.name;
+      tr.children[1].title = m.name;
+      tr.children[2].textContent = m.ok ? fmt(m.m.perimeter) : '—';
+      if (!m.ok) tr.children[2].title = m.error;
+      tbody.appendChild(tr);
+    });
+    var n = selection.pieces.length;
+    var text;
+    if (!selection.ok) text = selection.error;
+    else if (!n) text = host.kind === 'browser' ? 'Open two SVG shapes or pick a sample.' : 'No paths selected.';
+    else text = n + (n === 1 ? ' path' : ' paths') + (host.kind === 'browser' ? ' loaded' : ' selected') + (selection.document ? ' · ' + selection.document : '');
+    if (selection.skipped && selection.skipped.length) {
+      text += ' · skipped: ' + selection.skipped.map(function (s) { return s.name + ' (' + s.reason + ')'; }).join('; ');
+    }
+    $('#selection-summary').textContent = text;
+    if (ms.length === 2 && ms[0].ok && ms[1].ok) {
+      var d = ms[0].m.perimeter - ms[1].m.perimeter;
+      var tr2 = document.createElement('tr');
+      tr2.className = 'diff';
+      tr2.innerHTML = '<th>Δ</th><td class="name">difference</td><td class="perimeter"></td>';
+      tr2.children[2].textContent = fmt(Math.abs(d));
+      tbody.appendChild(tr2);
+    }
+  }
+
+  function renderResult() {
+    var msg = $('#message');
+    var stats = $('#stats');
+    var norm = $('#normalize-result');
+    norm.textContent = '';
+    if (design && design.normalized) {
+      norm.textContent = '→ ' + fmt(design.normalized.perimeter) + '  (A ×' + design.normalized.scales[0].toFixed(4) + ', B ×' + design.normalized.scales[1].toFixed(4) + ')';
+    }
+    var layers = settings.layers;
+    if (design && design.ok) {
+      DF.preview.render($('#preview'), design.pieces, layers, settings.labelSize, unit);
+      stats.textContent = design.count + ' connectors · pitch ' + fmt(design.pitch) + ' · perimeter ' + fmt(design.perimeter);
+      msg.className = 'message' + (design.warnings.length ? ' warning' : '');
+      msg.textContent = design.warnings.join(' ');
+    } else {
+      var pieces = selection.pieces.map(function (p, i) { return { key: ['A', 'B', 'C', 'D', 'E', 'F'][i] || String(i + 1), name: p.name, path: p.path }; });
+      try {
+        DF.preview.render($('#preview'), pieces.slice(0, 6), layers, settings.labelSize, unit);
+      } catch (e) {
+        DF.preview.render($('#preview'), [], layers, settings.labelSize, unit);
+      }
+      stats.textContent = '';
+      msg.className = 'message' + (design && !design.idle ? ' error' : '');
+      msg.textContent = design ? design.error : '';
+    }
+    $('#apply-btn').disabled = !(design && design.ok) || applying;
+  }
+
+  function recompute() {
+    if (pending) return;
+    pending = true;
+    window.requestAnimationFrame(function () {
+      pending = false;
+      design = DF.design.compute(selection, params);
+      renderMeasure();
+      renderResult();
+      document.body.dataset.state = design.ok ? 'ready' : 'error';
+    });
+  }
+
+  function changed() {
+    save();
+    syncControls();
+    recompute();
+  }
+
+  // ---------------------------------------------------------------- events
+  function bind() {
+    $('#normalize-on').addEventListener('change', function (e) { params.normalize = e.target.checked; changed(); });
+    $('#norm-target').addEventListener('change', function (e) {
+      params.target = e.target.value;
+      if (params.target === 'exact' && !(params.exact > 0) && design && design.measures[0] && design.measures[0].ok) {
+        params.exact = design.measures[0].m.perimeter;
+      }
+      changed();
+    });
+    $('#norm-pivot').addEventListener('change', function (e) { params.pivot = e.target.value; changed(); });
+    $$('#kind button').forEach(function (b) {
+      b.addEventListener('click', function () { params.kind = b.dataset.kind; changed(); });
+    });
+    $('#spacing').addEventListener('change', function (e) { params.spacing = e.target.value; changed(); });
+    $('#count').addEventListener('input', function (e) {
+      var v = Number(e.target.value);
+      e.target.classList.toggle('invalid', !(v >= 1 && v === Math.round(v)));
+      if (v >= 1 && v === Math.round(v)) { params.count = v; save(); recompute(); }
+    });
+    $('#slide').addEventListener('input', function (e) {
+      params.slide = Number(e.target.value);
+      $('#slide-out').textContent = params.slide.toFixed(2);
+      save();
+      recompute();
+    });
+    $('#angle').addEventListener('input', function (e) {
+      var v = Number(e.target.value);
+      if (v > 0 && v < 180) { params.angle = v; save(); recompute(); }
+    });
+    $('#invert').addEventListener('change', function (e) { params.invert = e.target.checked; changed(); });
+    $$('input.len').forEach(function (input) {
+      var spec = LEN[input.dataset.len];
+      input.addEventListener('input', function () {
+        var v = DF.units.parse(input.value, unit);
+        var ok = isFinite(v) && v >= spec.min && !(spec.min === 0 && v === 0 && input.dataset.len !== 'kerf');
+        input.classList.toggle('invalid', !ok);
+        if (ok) {
+          spec.set(v);
+          save();
+          recompute();
+        }
+      });
+      input.addEventListener('change', function () { showUnits(); });
+      input.addEventListener('keydown', function (e) {
+        if (e.key !== 'ArrowUp' && e.key !== 'ArrowDown') return;
+        var step = DF.units.toPoints(e.shiftKey ? 10 : unit === 'mm' ? 0.1 : unit === 'in' ? 0.01 : 1, unit);
+        var v = spec.get() + (e.key === 'ArrowUp' ? step : -step);
+        if (v >= spec.min) { spec.set(v); input.value = lenText(v); save(); recompute(); }
+        e.preventDefault();
+      });
+    });
+    $$('.start').forEach(function (row) {
+      var s = params.start[Number(row.dataset.piece)];
+      $('.start-mode', row).addEventListener('change', function (e) { params.start[Number(row.dataset.piece)].mode = e.target.value; changed(); });
+      $('.start-anchor', row).addEventListener('input', function (e) {
+        var v = Number(e.target.value);
+        if (v >= 1) { params.start[Number(row.dataset.piece)].anchor = Math.round(v); save(); recompute(); }
+      });
+      void s;
+    });
+    $$('.layer-row').forEach(function (row) {
+      var l = function () { return settings.layers[row.dataset.layer]; };
+      $('.layer-color', row).addEventListener('input', function (e) { l().color = e.target.value; save(); recompute(); });
+      $('.layer-name', row).addEventListener('change', function (e) { if (e.target.value.trim()) { l().name = e.target.value.trim(); save(); } });
+    });
+    $('#label-size').addEventListener('input', function (e) {
+      var v = Number(e.target.value);
+      if (v > 0) { settings.labelSize = v; save(); recompute(); }
+    });
+    $('#layers-reset').addEventListener('click', function () {
+      var d = DF.settings.defaults();
+      settings.layers = d.layers;
+      settings.labelSize = d.labelSize;
+      changed();
+    });
+    $('#refresh-btn').addEventListener('click', function () { host.refresh(); });
+    $('#apply-btn').addEventListener('click', apply);
+    window.addEventListener('resize', function () { recompute(); });
+  }
+
+  function bindBrowser() {
+    $('#browser-bar').hidden = false;
+    $('#apply-btn').textContent = 'Download SVG';
+    $('#refresh-btn').hidden = true;
+    $$('.cep-only').forEach(function (o) { o.remove(); });
+    var select = $('#sample-select');
+    DF.samples.forEach(function (s) {
+      var o = document.createElement('option');
+      o.value = s.id;
+      o.textContent = s.name;
+      select.appendChild(o);
+    });
+    select.addEventListener('change', function () {
+      if (select.value) host.useSample(select.value).catch(showError);
+    });
+    $('#open-btn').addEventListener('click', function () { $('#open-input').click(); });
+    $('#open-input').addEventListener('change', function (e) {
+      var files = e.target.files;
+      if (!files || !files.length) return;
+      select.value = '';
+      host.openFiles(files).catch(showError);
+      e.target.value = '';
+    });
+    $('#unit-select').addEventListener('change', function (e) { host.setUnit(e.target.value); });
+    document.addEventListener('dragover', function (e) { e.preventDefault(); });
+    document.addEventListener('drop', function (e) {
+      e.preventDefault();
+      if (e.dataTransfer && e.dataTransfer.files.length) host.openFiles(e.dataTransfer.files).catch(showError);
+    });
+  }
+
+  function showError(e) {
+    var msg = $('#message');
+    msg.className = 'message error';
+    msg.textContent = e && e.message ? e.message : String(e);
+  }
+
+  function apply() {
+    // Recompute from the current selection and parameters: never write a stale preview.
+    var fresh = DF.design.compute(selection, params);
+    design = fresh;
+    if (!fresh.ok) {
+      renderResult();
+      return Promise.resolve();
+    }
+    applying = true;
+    $('#apply-btn').disabled = true;
+    var plan = DF.design.plan(fresh, params, settings, selection.document);
+    return host.apply(plan).then(function (r) {
+      applying = false;
+      var msg = $('#message');
+      msg.className = 'message ' + (r.ok ? 'success' : 'error');
+      msg.textContent = r.ok ? r.message : r.error;
+      $('#apply-btn').disabled = false;
+      document.body.dataset.applied = r.ok ? 'ok' : 'error';
+    }, function (e) {
+      applying = false;
+      showError(e);
+      $('#apply-btn').disabled = false;
+      document.body.dataset.applied = 'error';
+    });
+  }
+
+  function onSelection(sel) {
+    selection = sel;
+    if (sel.units && sel.units !== unit) {
+      unit = sel.units;
+      if (host.kind === 'browser') $('#unit-select').value = unit;
+      showUnits();
+    }
+    recompute();
+  }
+
+  function start() {
+    host = window.__adobe_cep__ ? DF.createCepHost(new DF.CSInterface(window.__adobe_cep__)) : DF.createBrowserHost(window);
+    document.body.dataset.host = host.kind;
+    applyTheme(host.theme());
+    bind();
+    if (host.kind === 'browser') bindBrowser();
+    else $$('.start-mode').forEach(function (s, i) { void i; void s; });
+    syncControls();
+    DF.core.load().then(function () {
+      return host.start({ selection: onSelection, theme: applyTheme });
+    }).then(function () {
+      document.body.dataset.core = 'loaded';
+    }, function (e) {
+      showError(e);
+      document.body.dataset.core = 'error';
+    });
+  }
+
+  DF.app = { start: start, params: function () { return params; }, design: function () { return design; } };
+  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start);
+  else start();
+})(window.DF = window.DF || {});

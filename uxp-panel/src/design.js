@@ -1,0 +1,134 @@
+/* D-former panel: the design pipeline — measure → normalize → connect — as one pure computation
+ * over the host's selection and the panel's parameters (lengths in points). Nothing here writes:
+ * Apply only ever sends a design that computed without error. Host-agnostic. */
+(function (DF) {
+  'use strict';
+  var KEYS = ['A', 'B'];
+
+  function named(piece, e) {
+    return new Error('Path “' + piece.name + '”: ' + (e && e.message ? e.message : String(e)));
+  }
+
+  /** Measures every selected path; a path the core refuses carries its message instead. */
+  function measureAll(pieces) {
+    return pieces.map(function (p) {
+      try {
+        return { name: p.name, ok: true, m: DF.core.measure(p.path) };
+      } catch (e) {
+        return { name: p.name, ok: false, error: e.message };
+      }
+    });
+  }
+
+  /** Arc length (along the path's own direction) where a piece's connector 0 sits. */
+  function startArc(piece, path, perimeter, spec, key) {
+    var k = 0;
+    if (spec.mode === 'selected') {
+      if (piece.allSelected || !piece.selectedAnchors || !piece.selectedAnchors.length) {
+        throw new Error('Piece ' + key + ' (“' + piece.name + '”): no single anchor is selected. Select one anchor with the Direct Selection tool (A), or choose another start.');
+      }
+      k = piece.selectedAnchors[0];
+    } else if (spec.mode === 'anchor') {
+      k = Math.round(spec.anchor) - 1;
+      if (!(k >= 0 && k < path.points.length)) {
+        throw new Error('Piece ' + key + ' has ' + path.points.length + ' anchors; start anchor ' + spec.anchor + ' does not exist.');
+      }
+    }
+    var s = DF.core.lengthToAnchor(path, k) + (spec.offset || 0);
+    s %= perimeter;
+    return { anchor: k, arc: s < 0 ? s + perimeter : s };
+  }
+
+  function connectOptions(params, start) {
+    var o = { kind: params.kind, slide: params.slide, start: start, invert: !!params.invert, kerf: params.kerf };
+    if (params.spacing === 'pitch') o.pitch = params.pitch;
+    else o.count = Math.round(params.count);
+    if (params.kind === 'stitch' || params.kind === 'hybrid') {
+      o.inset = params.inset;
+      o.diameter = params.diameter;
+    }
+    if (params.kind !== 'stitch') o.length = params.length;
+    if (params.kind === 'teeth' || params.kind === 'hybrid') o.angle = params.angle;
+    return o;
+  }
+
+  /**
+   * selection: { pieces: [{ id, name, path, selectedAnchors, allSelected }] }; params: see app.js.
+   * Returns { ok, error?, measures, normalized?, perimeter?, pieces?, count?, pitch?, warnings }.
+   */
+  function compute(selection, params) {
+    var pieces = selection.pieces || [];
+    var out = { ok: false, measures: measureAll(pieces), warnings: [] };
+    if (!pieces.length) {
+      out.error = 'Select two closed paths.';
+      out.idle = true;
+      return out;
+    }
+    if (pieces.length !== 2) {
+      out.error = pieces.length === 1 ? 'Select a second closed path: a D-form joins two pieces.' : pieces.length + ' paths are selected; select exactly two.';
+      out.idle = pieces.length === 1;
+      return out;
+    }
+    try {
+      var bad = out.measures.filter(function (m) { return !m.ok; })[0];
+      if (bad) throw new Error('Path “' + bad.name + '”: ' + bad.error);
+      var paths = pieces.map(function (p) { return p.path; });
+      var perims = out.measures.map(function (m) { return m.m.perimeter; });
+      if (params.normalize) {
+        var target = params.target === 'exact' ? params.exact : params.target;
+        if (params.target === 'exact' && !(target > 0)) throw new Error('Enter the exact perimeter to normalize to.');
+        var n = DF.core.normalize(paths, { target: target, pivot: params.pivot });
+        out.normalized = n;
+        paths = n.paths;
+        perims = [n.perimeter, n.perimeter];
+      }
+      out.perimeter = perims[0];
+      var starts = pieces.map(function (p, i) {
+        return startArc(p, paths[i], perims[i], params.start[i], KEYS[i]);
+      });
+      var result = DF.core.connect(paths, connectOptions(params, [starts[0].arc, starts[1].arc]));
+      out.count = result.count;
+      out.pitch = result.pitch;
+      out.warnings = result.warnings || [];
+      out.pieces = pieces.map(function (p, i) {
+        var r = result.pieces[i];
+        return {
+          key: KEYS[i],
+          id: p.id,
+          name: p.name,
+          path: paths[i],
+          scale: out.normalized ? out.normalized.scales[i] : 1,
+          startAnchor: starts[i].anchor,
+          outline: r.outline,
+          holes: r.holes || [],
+          labels: r.labels || [],
+          marks: r.marks || [],
+        };
+      });
+      out.ok = true;
+    } catch (e) {
+      out.error = e && e.message ? e.message : String(e);
+    }
+    return out;
+  }
+
+  /** What Apply writes: updated outlines, then per piece its connectors, marks and labels. */
+  function plan(design, params, settings, documentName) {
+    return {
+      document: documentName,
+      updates: design.normalized
+        ? design.pieces.map(function (p) { return { id: p.id, path: p.path }; })
+        : [],
+      pieces: design.pieces.map(function (p) {
+        var piece = { id: p.id, name: 'piece ' + p.key, holes: p.holes, labels: p.labels, marks: p.marks };
+        if (params.kind !== 'stitch') piece.outline = p.outline;
+        return piece;
+      }),
+      layers: settings.layers,
+      labelSize: settings.labelSize,
+      design: design,
+    };
+  }
+
+  DF.design = { compute: compute, plan: plan, measureAll: measureAll, connectOptions: connectOptions, named: named };
+})(window.DF = window.DF || {});

@@ -1,0 +1,167 @@
+/* D-former panel (browser host): reads closed shapes out of an SVG file.
+ * The file is parsed with DOMParser as XML (a real parser: entities, CDATA, namespaces, comments).
+ * <path>, <rect>, <circle>, <ellipse> and <polygon> become SVG path data (circles/ellipses as four
+ * cubic Béziers with the usual κ = 4(√2−1)/3, as Illustrator draws them), then core paths through
+ * the core's `pathFromSvg`; then the element's full transform (its own and every ancestor's
+ * `transform`, and the root viewBox → physical size) maps them to document points with y up. An
+ * affine map sends Bézier control points to control points, so the mapping is exact. */
+(function (DF) {
+  'use strict';
+  var KAPPA = (4 * (Math.SQRT2 - 1)) / 3;
+  var SKIP = { defs: 1, clipPath: 1, mask: 1, symbol: 1, pattern: 1, marker: 1, metadata: 1, title: 1, desc: 1 };
+  /** Points per CSS unit of SVG lengths (1 px = 1/96 in). */
+  var CSS_PT = { px: 0.75, pt: 1, pc: 12, mm: 72 / 25.4, cm: 720 / 25.4, in: 72, '': 0.75 };
+
+  function mul(a, b) {
+    return [
+      a[0] * b[0] + a[2] * b[1],
+      a[1] * b[0] + a[3] * b[1],
+      a[0] * b[2] + a[2] * b[3],
+      a[1] * b[2] + a[3] * b[3],
+      a[0] * b[4] + a[2] * b[5] + a[4],
+      a[1] * b[4] + a[3] * b[5] + a[5],
+    ];
+  }
+  var IDENTITY = [1, 0, 0, 1, 0, 0];
+
+  /** Parses an SVG `transform` attribute into one matrix. */
+  function parseTransform(text) {
+    var m = IDENTITY;
+    if (!text) return m;
+    var re = /(matrix|translate|scale|rotate|skewX|skewY)\s*\(([^)]*)\)/g;
+    var match;
+    while ((match = re.exec(text))) {
+      var v = match[2].split(/[\s,]+/).filter(function (s) { return s !== ''; }).map(Number);
+      var t;
+      var k = match[1];
+      if (k === 'matrix') t = v.length === 6 ? v : IDENTITY;
+      else if (k === 'translate') t = [1, 0, 0, 1, v[0] || 0, v[1] || 0];
+      else if (k === 'scale') t = [v[0], 0, 0, v.length > 1 ? v[1] : v[0], 0, 0];
+      else if (k === 'rotate') {
+        var a = ((v[0] || 0) * Math.PI) / 180;
+        var c = Math.cos(a);
+        var s = Math.sin(a);
+        t = [c, s, -s, c, 0, 0];
+        if (v.length === 3) t = mul(mul([1, 0, 0, 1, v[1], v[2]], t), [1, 0, 0, 1, -v[1], -v[2]]);
+      } else if (k === 'skewX') t = [1, 0, Math.tan(((v[0] || 0) * Math.PI) / 180), 1, 0, 0];
+      else t = [1, Math.tan(((v[0] || 0) * Math.PI) / 180), 0, 1, 0, 0];
+      m = mul(m, t);
+    }
+    return m;
+  }
+
+  function num(el, name) {
+    var v = parseFloat(el.getAttribute(name));
+    return isFinite(v) ? v : 0;
+  }
+  function f(x) {
+    return String(Math.round(x * 1e9) / 1e9);
+  }
+  function ellipseD(cx, cy, rx, ry) {
+    var kx = KAPPA * rx;
+    var ky = KAPPA * ry;
+    return ['M', f(cx + rx), f(cy),
+      'C', f(cx + rx), f(cy + ky), f(cx + kx), f(cy + ry), f(cx), f(cy + ry),
+      'C', f(cx - kx), f(cy + ry), f(cx - rx), f(cy + ky), f(cx - rx), f(cy),
+      'C', f(cx - rx), f(cy - ky), f(cx - kx), f(cy - ry), f(cx), f(cy - ry),
+      'C', f(cx + kx), f(cy - ry), f(cx + rx), f(cy - ky), f(cx + rx), f(cy), 'Z'].join(' ');
+  }
+  function rectD(el) {
+    var x = num(el, 'x');
+    var y = num(el, 'y');
+    var w = num(el, 'width');
+    var h = num(el, 'height');
+    var rx = el.hasAttribute('rx') ? num(el, 'rx') : el.hasAttribute('ry') ? num(el, 'ry') : 0;
+    var ry = el.hasAttribute('ry') ? num(el, 'ry') : rx;
+    rx = Math.min(rx, w / 2);
+    ry = Math.min(ry, h / 2);
+    if (!(rx > 0 && ry > 0)) return ['M', f(x), f(y), 'H', f(x + w), 'V', f(y + h), 'H', f(x), 'Z'].join(' ');
+    var kx = KAPPA * rx;
+    var ky = KAPPA * ry;
+    return ['M', f(x + rx), f(y), 'H', f(x + w - rx),
+      'C', f(x + w - rx + kx), f(y), f(x + w), f(y + ry - ky), f(x + w), f(y + ry), 'V', f(y + h - ry),
+      'C', f(x + w), f(y + h - ry + ky), f(x + w - rx + kx), f(y + h), f(x + w - rx), f(y + h), 'H', f(x + rx),
+      'C', f(x + rx - kx), f(y + h), f(x), f(y + h - ry + ky), f(x), f(y + h - ry), 'V', f(y + ry),
+      'C', f(x), f(y + ry - ky), f(x + rx - kx), f(y), f(x + rx), f(y), 'Z'].join(' ');
+  }
+  /** The element's outline as SVG path data, or null when it is not a shape we read. */
+  function shapeD(el) {
+    var tag = el.localName;
+    if (tag === 'path') return el.getAttribute('d') || '';
+    if (tag === 'rect') return rectD(el);
+    if (tag === 'circle') return ellipseD(num(el, 'cx'), num(el, 'cy'), num(el, 'r'), num(el, 'r'));
+    if (tag === 'ellipse') return ellipseD(num(el, 'cx'), num(el, 'cy'), num(el, 'rx'), num(el, 'ry'));
+    if (tag === 'polygon') {
+      var v = (el.getAttribute('points') || '').trim().split(/[\s,]+/).map(Number);
+      if (v.length < 4) return '';
+      var d = 'M ' + f(v[0]) + ' ' + f(v[1]);
+      for (var i = 2; i + 1 < v.length; i += 2) d += ' L ' + f(v[i]) + ' ' + f(v[i + 1]);
+      return d + ' Z';
+    }
+    return null;
+  }
+  /** An SVG length ("210mm", "8.5in", "300") in points. */
+  function lengthPt(text) {
+    var m = /^\s*([-+]?[\d.]+(?:e[-+]?\d+)?)\s*(px|pt|pc|mm|cm|in)?\s*$/i.exec(text || '');
+    return m ? parseFloat(m[1]) * CSS_PT[(m[2] || '').toLowerCase()] : NaN;
+  }
+  /** Root matrix: user units → points (viewBox and physical width/height), then y flipped to y up. */
+  function rootMatrix(svg) {
+    var vb = (svg.getAttribute('viewBox') || '').trim().split(/[\s,]+/).map(Number);
+    var sx = 0.75;
+    var sy = 0.75;
+    var tx = 0;
+    var ty = 0;
+    if (vb.length === 4 && vb[2] > 0 && vb[3] > 0) {
+      var w = lengthPt(svg.getAttribute('width'));
+      var h = lengthPt(svg.getAttribute('height'));
+      sx = isFinite(w) && w > 0 ? w / vb[2] : 0.75;
+      sy = isFinite(h) && h > 0 ? h / vb[3] : sx;
+      tx = -vb[0] * sx;
+      ty = -vb[1] * sy;
+    }
+    return [sx, 0, 0, -sy, tx, -ty];
+  }
+  /** The unit the file was drawn in, for display ("mm" when it does not say). */
+  function fileUnit(svg) {
+    var m = /(mm|cm|in|pt|pc)\s*$/i.exec(svg.getAttribute('width') || '');
+    return m ? m[1].toLowerCase() : 'mm';
+  }
+
+  /**
+   * Parses SVG text → { unit, shapes: [{ name, path }] } (document points, y up), in document order.
+   * Throws an Error naming the file when it is not SVG or holds no shape.
+   */
+  function parse(text, fileName) {
+    var doc = new DOMParser().parseFromString(text, 'image/svg+xml');
+    var err = doc.getElementsByTagName('parsererror')[0];
+    if (err) throw new Error(fileName + ' is not well-formed SVG: ' + err.textContent.replace(/\s+/g, ' ').trim().slice(0, 160));
+    var svg = doc.documentElement;
+    if (svg.localName !== 'svg') throw new Error(fileName + ' is not an SVG file (its root element is <' + svg.localName + '>).');
+    var shapes = [];
+    var root = rootMatrix(svg);
+    (function walk(el, m) {
+      for (var c = el.firstElementChild; c; c = c.nextElementSibling) {
+        if (SKIP[c.localName]) continue;
+        var cm = mul(m, parseTransform(c.getAttribute('transform')));
+        var d = shapeD(c);
+        if (d === null) {
+          walk(c, cm);
+          continue;
+        }
+        if (!d.trim()) continue;
+        var label = c.getAttribute('id') || c.getAttribute('inkscape:label') || '<' + c.localName + '>';
+        var paths = DF.core.pathFromSvg(d);
+        for (var i = 0; i < paths.length; i++) {
+          shapes.push({
+            name: paths.length > 1 ? label + ' (' + (i + 1) + '/' + paths.length + ')' : label,
+            path: DF.core.transformPath(paths[i], cm),
+          });
+        }
+      }
+    })(svg, root);
+    if (!shapes.length) throw new Error(fileName + ' has no <path>, <rect>, <circle>, <ellipse> or <polygon> to use.');
+    return { unit: fileUnit(svg), shapes: shapes };
+  }
+  DF.svgImport = { parse: parse, parseTransform: parseTransform, ellipseD: ellipseD };
+})(window.DF = window.DF || {});
