@@ -60,6 +60,8 @@ def run_batch(requests):
             stderr=subprocess.PIPE,
             check=False,
             timeout=120,
+            # No console window flashing up on Windows for each call.
+            creationflags=getattr(subprocess, "CREATE_NO_WINDOW", 0),
         )
     except (OSError, subprocess.SubprocessError) as err:
         raise CoreError(f"Could not run the D-former core program {binary}: {err}") from err

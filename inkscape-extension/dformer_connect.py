@@ -19,6 +19,7 @@ class Connect(DformerEffect):
     def add_arguments(self, pars):
         super().add_arguments(pars)
         add = pars.add_argument
+        add("--tab", default="connectors", help="Notebook page shown in the dialog (ignored)")
         add("--kind", default="stitch", help="stitch, teeth, leaves or hybrid")
         add("--spacing", default="count", help="count (a number of connectors) or pitch (a distance)")
         add("--count", type=int, default=24, help="Number of connectors on each piece")

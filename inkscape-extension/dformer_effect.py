@@ -22,7 +22,6 @@ class DformerEffect(inkex.EffectExtension):
     piece_count = (1, None)
 
     def add_arguments(self, pars):
-        pars.add_argument("--tab", default="", help="Notebook page (ignored)")
         pars.add_argument(
             "--unit",
             default="document",

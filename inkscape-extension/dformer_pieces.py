@@ -1,7 +1,7 @@
 """Selected Inkscape objects <-> the core's path JSON, in document user units.
 
 SVG handling is inkex's: shapes become path data with ``ShapeElement.get_path()`` (rect,
-circle, ellipse, polygon, path), nested group transforms with ``composed_transform()``. The
+circle, ellipse, polygon, path), nested group transforms composed from the ``transform`` attributes. The
 path data itself is parsed by the core (``pathFromSvg``) and written by it (``pathToSvg``), so
 the extension and the ``dformer`` batch command read SVG curves identically.
 
@@ -76,6 +76,19 @@ def check_editable(elem):
         )
 
 
+def doc_transform(elem):
+    """Local coordinates -> document user units: the ``transform`` attributes of the element
+    and its ancestors, composed outermost first. Read from the raw attributes on purpose:
+    inkex 1.2's ``composed_transform()`` and ``get("transform")`` write every transform they
+    touch back as ``matrix(...)`` rounded to 6 significant digits, which would move the
+    pieces by ~1e-6 relative on saving and undo the exact perimeters."""
+    result = inkex.Transform()
+    chain = [elem] + [a for a in elem.ancestors() if isinstance(a, inkex.BaseElement)]
+    for node in reversed(chain):
+        result = result @ inkex.Transform(node.attrib.get("transform"))
+    return result
+
+
 def to_doc(path, transform):
     """Maps a core path through an inkex Transform (anchors and handles: exact for Beziers)."""
     def tr(p):
@@ -108,7 +121,7 @@ def read_pieces(shapes):
                 f"{describe(elem)} has {len(subpaths)} subpaths; a D-form piece must be one outline. "
                 "Use Path > Break Apart and select the outlines themselves."
             )
-        pieces.append(to_doc(subpaths[0], elem.composed_transform()))
+        pieces.append(to_doc(subpaths[0], doc_transform(elem)))
     return pieces
 
 
@@ -116,7 +129,7 @@ def path_data(paths_in_doc, elems):
     """SVG path data for each path, in the local coordinates of the matching element
     (``None`` element: document coordinates)."""
     local = [
-        to_doc(p, -e.composed_transform()) if e is not None else p
+        to_doc(p, -doc_transform(e)) if e is not None else p
         for p, e in zip(paths_in_doc, elems)
     ]
     return call_all([{"op": "pathToSvg", "path": p} for p in local])
@@ -135,7 +148,7 @@ def replace_outline(elem, d):
     new = inkex.PathElement()
     for key, value in elem.attrib.items():
         if key not in GEOMETRY_ATTRS:
-            new.set(key, value)
+            new.attrib[key] = value  # raw: inkex.set() would round a transform to 6 digits
     new.set("d", d)
     elem.replace_with(new)
     return new

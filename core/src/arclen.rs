@@ -22,19 +22,109 @@ pub const MIN_ACCURACY: f64 = 1e-15;
 /// Largest accepted relative accuracy.
 pub const MAX_ACCURACY: f64 = 0.1;
 
-/// Length of the control polygon p0→p1→p2→p3, an upper bound on the arc length.
-pub fn control_polygon_len(c: &CubicBez) -> f64 {
-    (c.p1 - c.p0).hypot() + (c.p2 - c.p1).hypot() + (c.p3 - c.p2).hypot()
+/// |v|: a plain square root where `x² + y²` is a normal number (libm's `hypot` costs about
+/// ten times more in WASM), `hypot` where squaring would overflow or underflow.
+#[inline]
+pub fn norm(v: Vec2) -> f64 {
+    let s = v.x * v.x + v.y * v.y;
+    if s.is_normal() { s.sqrt() } else { v.x.hypot(v.y) }
 }
 
-/// Arc length of one cubic to relative accuracy `accuracy`. Zero-length segments
-/// (all four points equal) are normal input and have length 0.
+/// Length of the control polygon p0→p1→p2→p3, an upper bound on the arc length.
+pub fn control_polygon_len(c: &CubicBez) -> f64 {
+    norm(c.p1 - c.p0) + norm(c.p2 - c.p1) + norm(c.p3 - c.p2)
+}
+
+/// The cubic translated so that it starts at the origin. Arc length is translation-invariant,
+/// but kurbo subdivides in absolute coordinates: a 0.01-unit curve 1e5 units from the origin
+/// would lose ~9 digits to the rounding of the subdivision points. Differences of nearby
+/// coordinates are exact (Sterbenz), so the translated curve is the same curve.
+pub fn at_origin(c: &CubicBez) -> CubicBez {
+    let o = c.p0.to_vec2();
+    CubicBez::new(Point::ORIGIN, c.p1 - o, c.p2 - o, c.p3 - o)
+}
+
+/// Arc length of one cubic to relative accuracy `accuracy` (absolute error ≤ `accuracy ×`
+/// control-polygon length). Zero-length segments (all four points equal) are normal input and
+/// have length 0.
+///
+/// The curve is moved to the origin and scaled to unit control-polygon length (exact up to one
+/// rounding per coordinate), then measured by [`arclen_unit`]; at unit scale no square can
+/// overflow, so speeds are plain square roots.
 pub fn segment_len(c: &CubicBez, accuracy: f64) -> f64 {
     let poly = control_polygon_len(c);
     if poly == 0.0 {
         return 0.0;
     }
-    c.arclen(accuracy * poly)
+    if !poly.is_finite() {
+        return at_origin(c).arclen(accuracy * poly);
+    }
+    let k = 1.0 / poly;
+    let o = c.p0;
+    let u = CubicBez::new(Point::ORIGIN, ((c.p1 - o) * k).to_point(), ((c.p2 - o) * k).to_point(), ((c.p3 - o) * k).to_point());
+    poly * arclen_unit(&u, accuracy, 0)
+}
+
+/// Perimeter of a closed outline to relative `accuracy` (the sum of [`segment_len`]).
+pub fn perimeter(contour: &Contour, accuracy: f64) -> f64 {
+    contour.segments().map(|c| segment_len(&c, accuracy)).sum()
+}
+
+/// ∫₀¹ |B'(t)| dt by Gauss–Legendre on node pairs symmetric about t = ½, with
+/// `B'/3 = dm ± dm1·x + dm2·x²` at `t = ½ ± x/2` (kurbo's `arclen_quadrature_core`, with plain
+/// square roots).
+#[inline]
+fn gl_core(coeffs: &[(f64, f64)], dm: Vec2, dm1: Vec2, dm2: Vec2) -> f64 {
+    let mut sum = 0.0;
+    for &(wi, xi) in coeffs {
+        let d = dm + dm2 * (xi * xi);
+        let p = d + dm1 * xi;
+        let m = d - dm1 * xi;
+        sum += wi * ((p.x * p.x + p.y * p.y).sqrt() + (m.x * m.x + m.y * m.y).sqrt());
+    }
+    1.5 * sum
+}
+
+/// kurbo 0.13's adaptive arc length (`arclen_rec`): the same error estimate (∫|B''|²/|B'|² by
+/// 8-point Gauss–Legendre, then the a-priori error bounds of the 8-, 16- and 24-point rules
+/// times the polygon-minus-chord length), the same rules and the same subdivision, hence the
+/// same accuracy semantics; only the speeds use `sqrt` (valid at the unit scale of
+/// [`segment_len`]) instead of `hypot`.
+fn arclen_unit(c: &CubicBez, accuracy: f64, depth: usize) -> f64 {
+    use kurbo::common::{
+        GAUSS_LEGENDRE_COEFFS_16_HALF, GAUSS_LEGENDRE_COEFFS_24_HALF, GAUSS_LEGENDRE_COEFFS_8,
+        GAUSS_LEGENDRE_COEFFS_8_HALF,
+    };
+    let d03 = c.p3 - c.p0;
+    let d01 = c.p1 - c.p0;
+    let d12 = c.p2 - c.p1;
+    let d23 = c.p3 - c.p2;
+    let sq = |v: Vec2| (v.x * v.x + v.y * v.y).sqrt();
+    let lp_lc = sq(d01) + sq(d12) + sq(d23) - sq(d03);
+    let dd1 = d12 - d01;
+    let dd2 = d23 - d12;
+    let dm = 0.25 * (d01 + d23) + 0.5 * d12;
+    let dm1 = 0.5 * (dd2 + dd1);
+    let dm2 = 0.25 * (dd2 - dd1);
+    let est: f64 = GAUSS_LEGENDRE_COEFFS_8
+        .iter()
+        .map(|&(wi, xi)| {
+            let d = dm + dm1 * xi + dm2 * (xi * xi);
+            let dd = dm1 + dm2 * (2.0 * xi);
+            wi * (dd.x * dd.x + dd.y * dd.y) / (d.x * d.x + d.y * d.y)
+        })
+        .sum();
+    if (est.powi(3) * 2.5e-6).min(3e-2) * lp_lc < accuracy {
+        return gl_core(GAUSS_LEGENDRE_COEFFS_8_HALF, dm, dm1, dm2);
+    }
+    if (est.powi(6) * 1.5e-11).min(9e-3) * lp_lc < accuracy {
+        return gl_core(GAUSS_LEGENDRE_COEFFS_16_HALF, dm, dm1, dm2);
+    }
+    if (est.powi(9) * 3.5e-16).min(3.5e-3) * lp_lc < accuracy || depth >= 20 {
+        return gl_core(GAUSS_LEGENDRE_COEFFS_24_HALF, dm, dm1, dm2);
+    }
+    let (c0, c1) = c.subdivide();
+    arclen_unit(&c0, accuracy * 0.5, depth + 1) + arclen_unit(&c1, accuracy * 0.5, depth + 1)
 }
 
 /// Cumulative arc lengths of a closed outline, and point/tangent lookup by arc length.
@@ -115,7 +205,7 @@ impl ArcTable {
         if poly == 0.0 {
             return (i, 0.0);
         }
-        let t = seg.inv_arclen(local, self.accuracy * poly);
+        let t = at_origin(seg).inv_arclen(local, self.accuracy * poly);
         (i, t.clamp(0.0, 1.0))
     }
 

@@ -71,9 +71,12 @@ impl Contour {
     }
 
     /// Signed area, positive when the outline runs counter-clockwise in a y-up system
-    /// (Green's theorem summed over the cubic segments).
+    /// (Green's theorem summed over the cubic segments). Computed relative to the first anchor
+    /// (the sum is translation-invariant for a closed outline), so a small shape far from the
+    /// origin does not lose its digits to products of large coordinates.
     pub fn signed_area(&self) -> f64 {
-        self.segments().map(|c| c.signed_area()).sum()
+        let o = self.knots.first().map_or(kurbo::Vec2::ZERO, |k| k.anchor.to_vec2());
+        self.segments().map(|c| CubicBez::new(c.p0 - o, c.p1 - o, c.p2 - o, c.p3 - o).signed_area()).sum()
     }
 
     /// Applies an affine map to every anchor and handle (Bézier curves are affine-invariant,

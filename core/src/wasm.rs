@@ -25,11 +25,72 @@ fn to_js<T: Serialize>(value: &T) -> Result<JsValue, JsError> {
         .map_err(|e| JsError::new(&format!("internal error while returning the result: {e}")))
 }
 
+// Fast path for the one large input, a path: flattening it in JS and copying one Float64Array
+// costs ~50× less than serde-wasm-bindgen's per-field reflection. Anything not plainly shaped
+// like the contract returns undefined, and `path_from_js` falls back to serde, whose error
+// names the problem. A missing or null handle is the anchor (a corner), as in the contract.
+#[wasm_bindgen(inline_js = r#"
+const num2 = (a) => Array.isArray(a) && a.length === 2 && typeof a[0] === 'number' && typeof a[1] === 'number';
+export function dformer_flatten_path(p) {
+  if (p === null || typeof p !== 'object' || !Array.isArray(p.points)) return undefined;
+  if (p.closed !== undefined && typeof p.closed !== 'boolean') return undefined;
+  const pts = p.points, n = pts.length, out = new Float64Array(1 + 6 * n);
+  out[0] = p.closed === true ? 1 : 0;
+  for (let i = 0, k = 1; i < n; i++, k += 6) {
+    const q = pts[i];
+    if (q === null || typeof q !== 'object') return undefined;
+    const a = q.anchor, l = q.left ?? a, r = q.right ?? a;
+    if (!num2(a) || !num2(l) || !num2(r)) return undefined;
+    out[k] = a[0]; out[k + 1] = a[1]; out[k + 2] = l[0]; out[k + 3] = l[1]; out[k + 4] = r[0]; out[k + 5] = r[1];
+  }
+  return out;
+}
+"#)]
+extern "C" {
+    fn dformer_flatten_path(p: &JsValue) -> Option<Vec<f64>>;
+}
+
+/// Reads a path: the flat fast path, else serde (for the precise error message).
+fn path_from_js(value: JsValue, what: &str) -> Result<PathDto, JsError> {
+    match dformer_flatten_path(&value) {
+        Some(flat) => {
+            let closed = flat.first() == Some(&1.0);
+            let points = flat
+                .get(1..)
+                .unwrap_or(&[])
+                .chunks_exact(6)
+                .map(|c| api::path::PointDto {
+                    anchor: [c[0], c[1]],
+                    left: Some([c[2], c[3]]),
+                    right: Some([c[4], c[5]]),
+                })
+                .collect();
+            Ok(PathDto { closed, points })
+        }
+        None => from_js(value, what),
+    }
+}
+
 /// `measure(path, accuracy?)` → `{ perimeter, area, orientation, bounds, centroid }`.
 #[wasm_bindgen]
 pub fn measure(path: JsValue, accuracy: Option<f64>) -> Result<JsValue, JsError> {
-    let path: PathDto = from_js(path, "path")?;
+    let path: PathDto = path_from_js(path, "path")?;
     to_js(&api::measure(&path, accuracy).map_err(js_error)?)
+}
+
+/// Bench only (bench/core.bench.mjs), not part of the contract: validates `path` once, then
+/// computes its perimeter `repeats` times (at least once), so the arc-length kernel can be
+/// timed from JS without the input conversion. Returns the perimeter.
+#[wasm_bindgen(js_name = benchPerimeter)]
+pub fn bench_perimeter(path: JsValue, accuracy: Option<f64>, repeats: u32) -> Result<f64, JsError> {
+    let path: PathDto = path_from_js(path, "path")?;
+    let accuracy = api::accuracy_or_default(accuracy).map_err(js_error)?;
+    let contour = path.to_contour(0).map_err(js_error)?;
+    let mut p = 0.0;
+    for _ in 0..repeats.max(1) {
+        p = crate::arclen::perimeter(std::hint::black_box(&contour), accuracy);
+    }
+    Ok(p)
 }
 
 /// `connect(pieces, options)` → `{ count, pitch, pieces: [PieceResult, PieceResult], warnings }`.
@@ -62,7 +123,7 @@ pub fn path_from_svg(d: JsValue) -> Result<JsValue, JsError> {
 /// `pathToSvg(path)` → SVG path data string.
 #[wasm_bindgen(js_name = pathToSvg)]
 pub fn path_to_svg(path: JsValue) -> Result<String, JsError> {
-    let path: PathDto = from_js(path, "path")?;
+    let path: PathDto = path_from_js(path, "path")?;
     api::svg::path_to_svg(&path).map_err(js_error)
 }
 

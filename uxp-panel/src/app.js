@@ -105,7 +105,6 @@
     $('#angle').value = params.angle;
     $('#invert').checked = params.invert;
     $$('.start').forEach(function (row) {
-      var s = params.start[Number(row.dataset.piece)];
       $('.start-mode', row).value = s.mode;
       $('.start-anchor', row).value = s.anchor;
       $('.start-anchor', row).hidden = s.mode !== 'anchor';
@@ -163,17 +162,13 @@
     }
     var layers = settings.layers;
     if (design && design.ok) {
-      DF.preview.render($('#preview'), design.pieces, layers, settings.labelSize, unit);
+      DF.preview.render($('#preview'), design.pieces, layers, settings.labelSize, design.pitch);
       stats.textContent = design.count + ' connectors · pitch ' + fmt(design.pitch) + ' · perimeter ' + fmt(design.perimeter);
       msg.className = 'message' + (design.warnings.length ? ' warning' : '');
       msg.textContent = design.warnings.join(' ');
     } else {
       var pieces = selection.pieces.map(function (p, i) { return { key: ['A', 'B', 'C', 'D', 'E', 'F'][i] || String(i + 1), name: p.name, path: p.path }; });
-      try {
-        DF.preview.render($('#preview'), pieces.slice(0, 6), layers, settings.labelSize, unit);
-      } catch (e) {
-        DF.preview.render($('#preview'), [], layers, settings.labelSize, unit);
-      }
+      DF.preview.render($('#preview'), pieces.slice(0, 6), layers, settings.labelSize, 0);
       stats.textContent = '';
       msg.className = 'message' + (design && !design.idle ? ' error' : '');
       msg.textContent = design ? design.error : '';
@@ -252,13 +247,11 @@
       });
     });
     $$('.start').forEach(function (row) {
-      var s = params.start[Number(row.dataset.piece)];
       $('.start-mode', row).addEventListener('change', function (e) { params.start[Number(row.dataset.piece)].mode = e.target.value; changed(); });
       $('.start-anchor', row).addEventListener('input', function (e) {
         var v = Number(e.target.value);
         if (v >= 1) { params.start[Number(row.dataset.piece)].anchor = Math.round(v); save(); recompute(); }
       });
-      void s;
     });
     $$('.layer-row').forEach(function (row) {
       var l = function () { return settings.layers[row.dataset.layer]; };
@@ -359,7 +352,6 @@
     applyTheme(host.theme());
     bind();
     if (host.kind === 'browser') bindBrowser();
-    else $$('.start-mode').forEach(function (s, i) { void i; void s; });
     syncControls();
     DF.core.load().then(function () {
       return host.start({ selection: onSelection, theme: applyTheme });

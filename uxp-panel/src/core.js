@@ -6,6 +6,10 @@
 (function (DF) {
   'use strict';
   var api = null;
+  /** The glue declares `let wasm_bindgen` at script top level: a global binding, not a window property. */
+  function glue() {
+    return typeof wasm_bindgen === 'function' ? wasm_bindgen : null;
+  }
 
   function base64Bytes(b64) {
     var bin = atob(b64);
@@ -17,12 +21,13 @@
   /** Loads the module once; resolves to the core's exported functions. */
   function load() {
     if (api) return Promise.resolve(api);
-    if (typeof window.wasm_bindgen !== 'function') {
+    var init = glue();
+    if (!init) {
       return Promise.reject(new Error('The geometry core (wasm/dformer.js) is missing: run `node uxp-panel/build.mjs`.'));
     }
     var source = window.DFORMER_WASM_BASE64 ? base64Bytes(window.DFORMER_WASM_BASE64) : 'wasm/dformer_bg.wasm';
-    return window.wasm_bindgen({ module_or_path: source }).then(function () {
-      api = window.wasm_bindgen;
+    return init({ module_or_path: source }).then(function () {
+      api = init;
       return api;
     });
   }

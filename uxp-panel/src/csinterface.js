@@ -35,7 +35,8 @@
       if (typeof e === 'string') {
         try {
           e = JSON.parse(e);
-        } catch (err) {
+        } catch (notJson) {
+          void notJson;
           e = { type: type, data: event };
         }
       }

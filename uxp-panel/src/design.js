@@ -20,8 +20,14 @@
     });
   }
 
-  /** Arc length (along the path's own direction) where a piece's connector 0 sits. */
-  function startArc(piece, path, perimeter, spec, key) {
+  /**
+   * Arc length where a piece's connector 0 sits, in the core's convention: measured from the
+   * path's first anchor along the piece's WALK (A counter-clockwise, B clockwise, y up; the core
+   * reverses a path drawn the other way, still starting at anchor 0). So anchor k of a path drawn
+   * against its walk lies at P − (length to k along the drawing). `offset` runs along the walk.
+   */
+  function startArc(piece, path, perimeter, spec, index, orientation) {
+    var key = KEYS[index];
     var k = 0;
     if (spec.mode === 'selected') {
       if (piece.allSelected || !piece.selectedAnchors || !piece.selectedAnchors.length) {
@@ -34,8 +40,10 @@
         throw new Error('Piece ' + key + ' has ' + path.points.length + ' anchors; start anchor ' + spec.anchor + ' does not exist.');
       }
     }
-    var s = DF.core.lengthToAnchor(path, k) + (spec.offset || 0);
-    s %= perimeter;
+    var along = DF.core.lengthToAnchor(path, k);
+    var walkCcw = index === 0;
+    var s = (orientation === 'ccw') === walkCcw ? along : along === 0 ? 0 : perimeter - along;
+    s = (s + (spec.offset || 0)) % perimeter;
     return { anchor: k, arc: s < 0 ? s + perimeter : s };
   }
 
@@ -84,7 +92,7 @@
       }
       out.perimeter = perims[0];
       var starts = pieces.map(function (p, i) {
-        return startArc(p, paths[i], perims[i], params.start[i], KEYS[i]);
+        return startArc(p, paths[i], perims[i], params.start[i], i, out.measures[i].m.orientation);
       });
       var result = DF.core.connect(paths, connectOptions(params, [starts[0].arc, starts[1].arc]));
       out.count = result.count;

@@ -20,7 +20,8 @@
     }
     try {
       return JSON.parse(text);
-    } catch (e) {
+    } catch (notJson) {
+      void notJson;
       return { ok: false, error: 'Unexpected answer from Illustrator to ' + what + ': ' + String(text).slice(0, 120) };
     }
   }

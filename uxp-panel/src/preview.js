@@ -17,9 +17,10 @@
 
   /**
    * Draws `pieces` ([{ key, name, path, outline?, holes?, labels?, marks? }], document points, y up)
-   * into the <svg> element. `layers` gives colours; `labelSize` in points; `unit` for the size notes.
+   * into the <svg> element. `layers` gives colours; `labelSize` in points; `pitch` (points, optional)
+   * caps the label size so neighbouring numbers never overlap on screen.
    */
-  function render(svg, pieces, layers, labelSize, unit) {
+  function render(svg, pieces, layers, labelSize, pitch) {
     while (svg.firstChild) svg.removeChild(svg.firstChild);
     if (!pieces || !pieces.length) {
       svg.setAttribute('viewBox', '0 0 100 60');
@@ -46,7 +47,7 @@
     var vbH = maxH + 2 * margin + head;
     svg.setAttribute('viewBox', [-margin, -margin - head, vbW, vbH].join(' '));
     var pxPerUnit = rect.width > 0 ? Math.min(rect.width / vbW, rect.height > 0 ? rect.height / vbH : Infinity) : 1;
-    var minFont = 9 / pxPerUnit;
+    var minFont = 8 / pxPerUnit;
     var x = 0;
     pieces.forEach(function (p, i) {
       var b = boxes[i];
@@ -59,6 +60,7 @@
         el('path', { class: 'mark', d: X.pathD(m), stroke: layers.score.color }, g);
       });
       var font = Math.max(labelSize, minFont);
+      if (pitch > 0) font = Math.min(font, 0.55 * pitch);
       (p.labels || []).forEach(function (l) {
         var t = el('text', {
           class: 'label',
@@ -72,7 +74,7 @@
         if (l.angle) t.setAttribute('transform', 'rotate(' + X.n(-l.angle) + ' ' + X.n(l.at[0]) + ' ' + X.n(-l.at[1]) + ')');
         t.textContent = l.text;
       });
-      var title = el('text', { class: 'piece-title', x: X.n(b[0]), y: X.n(b[1] - head * 0.45), 'font-size': X.n(Math.max(head * 0.5, minFont * 1.2)) }, g);
+      var title = el('text', { class: 'piece-title', x: X.n(b[0]), y: X.n(b[1] - head * 0.45), 'font-size': X.n(Math.max(head * 0.45, minFont * 1.2)) }, g);
       title.textContent = p.key + '  ' + p.name;
       x += b[2] - b[0] + gap;
     });

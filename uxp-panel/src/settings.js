@@ -31,16 +31,16 @@
         if (typeof saved.labelSize === 'number' && saved.labelSize > 0) s.labelSize = saved.labelSize;
         if (saved.params && typeof saved.params === 'object') s.params = saved.params;
       }
-    } catch (e) {
-      // unreadable storage: defaults
+    } catch (unreadable) {
+      void unreadable; // unreadable storage: defaults
     }
     return s;
   }
   function save(settings) {
     try {
       window.localStorage.setItem(KEY, JSON.stringify(settings));
-    } catch (e) {
-      // storage full or disabled: settings last for this session only
+    } catch (full) {
+      void full; // storage full or disabled: settings last for this session only
     }
   }
   function hexToRgb(hex) {

@@ -6,7 +6,8 @@
 // immediates so that each opcode is seen exactly once. Post-MVP features and the Chromium release
 // that shipped them (chromestatus / V8 release notes):
 //   mutable-globals 74, sign-ext 74, nontrapping-fptoint 75, bulk-memory 75, multi-value 85,
-//   BigInt<->i64 at the JS boundary 85, SIMD 91, exceptions 95, reference-types 96, tail-call 112.
+//   BigInt<->i64 at the JS boundary 85, SIMD 91, exceptions 95, reference-types 96, tail-call 112,
+//   relaxed SIMD 114.
 // CEP's Chromium (Adobe CEP cookbooks): CEP 8 = 57, CEP 9 = 61, CEP 10 = 74, CEP 11 = 88, CEP 12 = 99.
 
 export const FEATURE_CHROMIUM = {
@@ -16,6 +17,7 @@ export const FEATURE_CHROMIUM = {
   'bulk-memory': 75,
   'multi-value': 85,
   simd: 91,
+  'relaxed-simd': 114,
   exceptions: 95,
   'reference-types': 96,
   'tail-call': 112,
@@ -81,9 +83,14 @@ export function scanWasmFeatures(bytes) {
   const u8 = bytes instanceof Uint8Array ? bytes : new Uint8Array(bytes);
   if (u8[0] !== 0 || u8[1] !== 0x61 || u8[2] !== 0x73 || u8[3] !== 0x6d) throw new Error('not a WebAssembly module');
   const features = {};
+  const where = {};
+  let importedFuncs = 0;
+  let current = null;
   const use = (name) => {
     features[name] = (features[name] || 0) + 1;
+    if (current !== null) (where[name] = where[name] || new Set()).add(current);
   };
+  let names = null;
   const r = new Reader(u8, 8);
   while (r.p < u8.length) {
     const id = r.byte();
@@ -91,18 +98,52 @@ export function scanWasmFeatures(bytes) {
     const end = r.p + size;
     const s = new Reader(u8, r.p, end);
     if (id === 1) typeSection(s, use);
-    else if (id === 2) importSection(s, use);
+    else if (id === 2) importedFuncs = importSection(s, use);
     else if (id === 4) s.vec(() => tableType(s, use));
     else if (id === 6) s.vec(() => globalEntry(s, use));
     else if (id === 9) elementSection(s, use);
-    else if (id === 10) s.vec(() => functionBody(s, use));
+    else if (id === 10) {
+      s.vec((i) => {
+        current = importedFuncs + i;
+        functionBody(s, use);
+      });
+      current = null;
+    } else if (id === 0) names = nameSection(s) || names;
     else if (id === 11) dataSection(s, use);
     else if (id === 12) use('bulk-memory'); // data count section
     r.p = end;
   }
   let minChromium = 57;
   for (const name of Object.keys(features)) minChromium = Math.max(minChromium, FEATURE_CHROMIUM[name] || 0);
-  return { features, minChromium };
+  const functions = {};
+  for (const [name, set] of Object.entries(where)) {
+    functions[name] = [...set].map((i) => (names && names.get(i)) || `func[${i}]`);
+  }
+  return { features, minChromium, functions };
+}
+
+/** Function names from the `name` custom section (subsection 1), if present. */
+function nameSection(s) {
+  const len = s.u32();
+  const title = Buffer.from(s.b.subarray(s.p, s.p + len)).toString();
+  s.p += len;
+  if (title !== 'name') return null;
+  const names = new Map();
+  while (s.p < s.end) {
+    const sub = s.byte();
+    const size = s.u32();
+    const end = s.p + size;
+    if (sub === 1) {
+      s.vec(() => {
+        const idx = s.u32();
+        const n = s.u32();
+        names.set(idx, Buffer.from(s.b.subarray(s.p, s.p + n)).toString());
+        s.p += n;
+      });
+    }
+    s.p = end;
+  }
+  return names;
 }
 
 /** The oldest CEP release (and Illustrator) whose Chromium has every feature, or null. */
@@ -137,11 +178,15 @@ function tableType(s, use) {
 }
 
 function importSection(s, use) {
+  let funcs = 0;
   s.vec(() => {
     s.skip(s.u32());
     s.skip(s.u32());
     const kind = s.byte();
-    if (kind === 0) s.u32();
+    if (kind === 0) {
+      s.u32();
+      funcs++;
+    }
     else if (kind === 1) tableType(s, use);
     else if (kind === 2) limits(s);
     else if (kind === 3) {
@@ -153,6 +198,7 @@ function importSection(s, use) {
       s.u32();
     } else throw new Error(`unknown import kind ${kind}`);
   });
+  return funcs;
 }
 
 function constExpr(s, use) {
@@ -203,7 +249,7 @@ function functionBody(s, use) {
     valType(body.byte(), use);
   });
   while (body.p < end) {
-    if (instruction(body.byte(), body, use) === 'stop') break;
+    instruction(body.byte(), body, use);
   }
   s.p = end;
 }
@@ -275,8 +321,18 @@ function instruction(op, s, use) {
       if (sub === 12 || sub === 14) s.u32();
     } else throw new Error(`unknown 0xFC sub-opcode ${sub}`);
   } else if (op === 0xfd) {
-    use('simd');
-    return 'stop'; // SIMD immediates vary; the feature is recorded, the rest of this body is skipped
+    const sub = s.u32();
+    use(sub >= 0x100 ? 'relaxed-simd' : 'simd');
+    if (sub <= 11 || sub === 92 || sub === 93) {
+      s.u32(); // memarg
+      s.u32();
+    } else if (sub === 12 || sub === 13) s.skip(16); // v128.const, i8x16.shuffle
+    else if (sub >= 21 && sub <= 34) s.byte(); // extract/replace lane
+    else if (sub >= 84 && sub <= 91) {
+      s.u32();
+      s.u32();
+      s.byte(); // load/store lane: memarg + lane
+    }
   } else if (op > 0xc4 && op !== 0xfc) throw new Error(`unknown opcode 0x${op.toString(16)}`);
   return undefined;
 }
@@ -284,7 +340,10 @@ function instruction(op, s, use) {
 // CLI: node uxp-panel/tools/wasm-features.mjs file.wasm
 if (import.meta.url === `file://${process.argv[1]}`) {
   const { readFileSync } = await import('node:fs');
-  const { features, minChromium } = scanWasmFeatures(readFileSync(process.argv[2]));
+  const { features, minChromium, functions } = scanWasmFeatures(readFileSync(process.argv[2]));
   const cep = minimumCep(minChromium);
   console.log(JSON.stringify({ features, minChromium, cep }, null, 2));
+  if (process.argv.includes('--where')) {
+    for (const [name, list] of Object.entries(functions)) console.log(`${name}:\n  ${list.slice(0, 12).join('\n  ')}${list.length > 12 ? `\n  … ${list.length - 12} more` : ''}`);
+  }
 }

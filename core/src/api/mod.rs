@@ -55,6 +55,11 @@ pub fn measure(path: &PathDto, accuracy: Option<f64>) -> Result<MeasureDto> {
     let contour = path.to_contour(0)?;
     validate::check_outline(&contour, 0)?;
     let m = measure::measure(&contour, accuracy);
+    if !(m.perimeter.is_finite() && m.area.is_finite()) {
+        return Err(Error::Infeasible {
+            reason: "The path is too large to measure: its coordinates are near the limit of floating-point numbers. Scale it down.".into(),
+        });
+    }
     Ok(MeasureDto {
         perimeter: m.perimeter,
         area: m.area,

@@ -4,8 +4,9 @@
 
 use super::piece::Walked;
 use super::spacing::Station;
+use crate::arclen::control_polygon_len;
 use crate::contour::{Contour, Knot};
-use kurbo::{offset::offset_cubic, BezPath, CubicBez, ParamCurve, PathEl, Point};
+use kurbo::{offset::offset_cubic, BezPath, CubicBez, ParamCurve, ParamCurveNearest, PathEl, Point, Vec2};
 use lyon_geom::{point as lpt, CubicBezierSegment};
 
 /// Accumulates cubic segments head to tail in the walking direction.
@@ -127,23 +128,56 @@ impl<'a> Builder<'a> {
                 offset_cubic(q, d, self.tol, &mut buf);
                 cubics(&buf)
             };
-            self.join(offset, tag);
+            self.join(offset, v, tag);
         }
     }
 
-    /// Appends one offset piece, trimming it against the previous segment when they cross.
-    fn join(&mut self, mut piece: Vec<CubicBez>, tag: usize) {
+    /// Appends one offset piece. Where it does not start at the previous end (a corner of the
+    /// edge), the two tangent lines at the gap meet at the mitre point `M`. On the outer side of
+    /// the corner (`M` ahead of the previous end and behind the new start) the gap is closed
+    /// through `M`, a sharp corner like the edge's own, unless the mitre is longer than four
+    /// times the offset (then a straight bevel). On the inner side the two offsets cross: both
+    /// are cut at their intersection (lyon_geom's cubic–cubic intersection), or at `M` when the
+    /// crossing falls exactly on their ends.
+    fn join(&mut self, mut piece: Vec<CubicBez>, v: f64, tag: usize) {
         if piece.is_empty() {
             return;
         }
         if let Some(last) = self.segs.last().copied() {
-            if (piece[0].p0 - last.p3).hypot() > self.tol {
-                let hits = to_lyon(&last).cubic_intersections_t(&to_lyon(&piece[0]));
-                if let Some(&(t1, t2)) = hits.iter().max_by(|x, y| x.0.total_cmp(&y.0)) {
-                    let cut = last.subsegment(0.0..t1);
-                    *self.segs.last_mut().expect("non-empty") = cut;
-                    piece[0] = piece[0].subsegment(t2..1.0);
-                    piece[0].p0 = cut.p3;
+            let (e, s) = (last.p3, piece[0].p0);
+            if (s - e).hypot() > self.tol {
+                let t1 = end_tangent(&last);
+                let t2 = start_tangent(&piece[0]);
+                let mitre = meet(e, t1, s, t2);
+                let outer = mitre.is_some_and(|m| (m - e).dot(t1) > 0.0 && (s - m).dot(t2) > 0.0);
+                if outer {
+                    let m = mitre.expect("outer implies a mitre");
+                    if (m - e).hypot() <= 4.0 * v.abs() {
+                        self.push(line(e, m), tag);
+                    }
+                } else {
+                    let hits = to_lyon(&last).cubic_intersections_t(&to_lyon(&piece[0]));
+                    let cut_at = hits
+                        .iter()
+                        .max_by(|x, y| x.0.total_cmp(&y.0))
+                        .map(|&(a, b)| (a, b, last.eval(a)))
+                        .or_else(|| {
+                            mitre.filter(|m| (*m - e).hypot() <= 4.0 * v.abs() && (*m - s).hypot() <= 4.0 * v.abs()).map(|m| {
+                                (last.nearest(m, 1e-12).t, piece[0].nearest(m, 1e-12).t, m)
+                            })
+                        });
+                    if let Some((a, b, m)) = cut_at {
+                        let mut cut = last.subsegment(0.0..a);
+                        cut.p3 = m;
+                        self.segs.pop();
+                        let last_tag = self.tags.pop().unwrap_or(tag);
+                        if control_polygon_len(&cut) > self.tol {
+                            self.segs.push(cut);
+                            self.tags.push(last_tag);
+                        }
+                        piece[0] = piece[0].subsegment(b..1.0);
+                        piece[0].p0 = m;
+                    }
                 }
             }
         }
@@ -174,6 +208,26 @@ impl<'a> Builder<'a> {
         let contour = Contour::new(knots, self.piece.index).unwrap_or_else(|_| self.piece.contour.clone());
         (contour, self.segs, self.tags)
     }
+}
+
+/// Direction in which a cubic leaves its start (first non-coincident control point).
+fn start_tangent(c: &CubicBez) -> Vec2 {
+    [c.p1, c.p2, c.p3].iter().map(|&p| p - c.p0).find(|d| d.hypot() > 0.0).map(|d| d.normalize()).unwrap_or(Vec2::ZERO)
+}
+
+/// Direction in which a cubic arrives at its end.
+fn end_tangent(c: &CubicBez) -> Vec2 {
+    [c.p2, c.p1, c.p0].iter().map(|&p| c.p3 - p).find(|d| d.hypot() > 0.0).map(|d| d.normalize()).unwrap_or(Vec2::ZERO)
+}
+
+/// Where the lines `a + x·u` and `b + y·w` meet (Cramer's rule), if they are not parallel.
+fn meet(a: Point, u: Vec2, b: Point, w: Vec2) -> Option<Point> {
+    let den = u.cross(w);
+    if den.abs() < 1e-12 {
+        return None;
+    }
+    let x = (b - a).cross(w) / den;
+    Some(a + u * x)
 }
 
 /// The cubic segments of a single-subpath BezPath (lines and quadratics raised to cubics).

@@ -62,8 +62,10 @@ pub fn outline(piece: &Walked, connectors: &[f64], set: &Settings) -> Option<(Co
     let mut b = Builder::new(piece, pitch);
     for (i, &k) in own.iter().enumerate() {
         let (root0, centre, root1) = (&st[3 * i], &st[3 * i + 1], &st[3 * i + 2]);
-        let t = centre.tangent;
-        let n = -piece.inward(t);
+        // The connector's frame; at a corner the mitre direction, so the leaf splits the angle.
+        let inward = piece.inward_at(centre);
+        let n = -inward.normalize();
+        let t = piece.along(inward);
         let q1 = centre.point - t * h + n * (len - ry);
         let q2 = centre.point + n * len;
         let q3 = centre.point + t * h + n * (len - ry);

@@ -92,16 +92,19 @@ fn annotate(piece: &Walked, stations: &[Station], set: &Settings, side: f64) -> 
     let labels = stations
         .iter()
         .enumerate()
-        .map(|(k, st)| Label {
-            text: (k + 1).to_string(),
-            at: st.point + piece.inward(st.tangent) * (side * depth),
-            angle: circle::readable_angle(st.tangent),
+        .map(|(k, st)| {
+            let n = piece.inward_at(st);
+            Label {
+                text: (k + 1).to_string(),
+                at: st.point + n * (side * depth),
+                angle: circle::readable_angle(piece.along(n)),
+            }
         })
         .collect();
     let marks = stations
         .first()
         .map(|st| {
-            let n = piece.inward(st.tangent) * side;
+            let n = piece.inward_at(st) * side;
             vec![circle::triangle(st.point + n * (depth + size), -n, size)]
         })
         .unwrap_or_default();

@@ -23,7 +23,7 @@ pub fn side(set: &Settings) -> f64 {
 /// Hole centres of one piece, in connector order.
 pub fn centers(piece: &Walked, stations: &[Station], set: &Settings) -> Vec<Point> {
     let depth = side(set) * set.inset;
-    stations.iter().map(|st| st.point + piece.inward(st.tangent) * depth).collect()
+    stations.iter().map(|st| st.point + piece.inward_at(st) * depth).collect()
 }
 
 /// The drawn holes (see the module comment for kerf). Holes run against the drawing direction

@@ -73,7 +73,7 @@ pub fn outline(piece: &Walked, connectors: &[f64], set: &Settings, own: bool) ->
     let mapped: Vec<Point> = stations
         .iter()
         .zip(&vs)
-        .map(|(st, &v)| st.point - piece.inward(st.tangent) * v)
+        .map(|(st, &v)| st.point - piece.inward_at(st) * v)
         .collect();
     let m = us.len();
     let mut b = Builder::new(piece, pitch);

@@ -317,6 +317,7 @@ pub fn solve(pieces: &SeamPieces, options: &SimulateOptions) -> Result<Solution>
         lambda = (lambda / 3.0).max(1e-12);
         let f = flip_pass(&mut x, &mut tri, pieces);
         flips += f;
+        if std::env::var("SIMDBG").is_ok() { eprintln!("it {iterations} cost {c:.3e} lambda {lambda:.1e} dmax {dmax:.2e} flips {f} vol {:.4}", signed_volume(&x, &tri)); }
         if f > 0 {
             bars = self::bars(pieces, &tri);
             c = cost(&x, &bars);

@@ -1,0 +1,118 @@
+// Benchmark (not a test): perimeter speed and accuracy of the WASM core vs the adaptive-Simpson
+// arc length of the earlier D-form scripts, in the same process; and the .wasm size.
+// Run: wasm-pack build core --target nodejs --out-dir pkg && node bench/core.bench.mjs
+// Prints figures and PASS/MISS against the targets; always exits 0.
+import { readFileSync, statSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { fileURLToPath } from 'node:url';
+
+const here = (p) => fileURLToPath(new URL(p, import.meta.url));
+const require = createRequire(import.meta.url);
+const core = require(here('../core/pkg/dformer.js'));
+
+const TARGET_ERR = 1e-12, TARGET_RATIO = 20, TARGET_KB = 300;
+const N = 1000;
+
+// A smooth, simple 1,000-segment outline: r(θ) = 100 (1 + 0.3 sin 5θ + 0.1 cos 13θ), sampled with
+// Hermite handles (handle = anchor ± tangent·Δθ/3), centred away from the origin.
+function blob(n) {
+  const r = (t) => 100 * (1 + 0.3 * Math.sin(5 * t) + 0.1 * Math.cos(13 * t));
+  const dr = (t) => 100 * (1.5 * Math.cos(5 * t) - 1.3 * Math.sin(13 * t));
+  const h = (2 * Math.PI) / n;
+  const points = [];
+  for (let i = 0; i < n; i++) {
+    const t = i * h, c = Math.cos(t), s = Math.sin(t);
+    const a = [500 + r(t) * c, 300 + r(t) * s];
+    const d = [dr(t) * c - r(t) * s, dr(t) * s + r(t) * c];
+    points.push({ anchor: a, left: [a[0] - d[0] * h / 3, a[1] - d[1] * h / 3], right: [a[0] + d[0] * h / 3, a[1] + d[1] * h / 3] });
+  }
+  return { closed: true, points };
+}
+
+function segments(path) {
+  const p = path.points, n = p.length, out = [];
+  for (let i = 0; i < n; i++) {
+    const a = p[i], b = p[(i + 1) % n];
+    out.push([a.anchor, a.right ?? a.anchor, b.left ?? b.anchor, b.anchor]);
+  }
+  return out;
+}
+
+// |B'(t)| of a cubic given by its control points.
+function speed(c, t) {
+  const u = 1 - t;
+  const x = 3 * (u * u * (c[1][0] - c[0][0]) + 2 * u * t * (c[2][0] - c[1][0]) + t * t * (c[3][0] - c[2][0]));
+  const y = 3 * (u * u * (c[1][1] - c[0][1]) + 2 * u * t * (c[2][1] - c[1][1]) + t * t * (c[3][1] - c[2][1]));
+  return Math.hypot(x, y);
+}
+
+// The baseline: adaptive Simpson on |B'(t)| with tolerance 1e-5 per segment, as the earlier
+// D-form scripts computed arc length.
+function simpsonLength(c, eps = 1e-5) {
+  const f = (t) => speed(c, t);
+  const rec = (a, b, fa, fm, fb, whole, eps, depth) => {
+    const m = (a + b) / 2, lm = (a + m) / 2, rm = (m + b) / 2;
+    const flm = f(lm), frm = f(rm);
+    const left = ((m - a) / 6) * (fa + 4 * flm + fm);
+    const right = ((b - m) / 6) * (fm + 4 * frm + fb);
+    if (depth <= 0 || Math.abs(left + right - whole) <= 15 * eps) return left + right + (left + right - whole) / 15;
+    return rec(a, m, fa, flm, fm, left, eps / 2, depth - 1) + rec(m, b, fm, frm, fb, right, eps / 2, depth - 1);
+  };
+  const fa = f(0), fm = f(0.5), fb = f(1);
+  return rec(0, 1, fa, fm, fb, (fa + 4 * fm + fb) / 6, eps, 50);
+}
+const simpsonPerimeter = (segs) => segs.reduce((s, c) => s + simpsonLength(c), 0);
+
+// Reference: composite 20-point Gauss–Legendre, 32 panels per segment, compensated sum.
+function gaussLegendre(n) {
+  const out = [];
+  for (let i = 0; i < n; i++) {
+    let x = Math.cos((Math.PI * (i + 0.75)) / (n + 0.5)), p0, p1, dp;
+    for (let it = 0; it < 100; it++) {
+      p0 = 1; p1 = x;
+      for (let k = 2; k <= n; k++) { const p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k; p0 = p1; p1 = p2; }
+      dp = (n * (x * p1 - p0)) / (x * x - 1);
+      const dx = p1 / dp; x -= dx;
+      if (Math.abs(dx) < 1e-17) break;
+    }
+    out.push([x, 2 / ((1 - x * x) * dp * dp)]);
+  }
+  return out;
+}
+function referencePerimeter(segs) {
+  const gl = gaussLegendre(20), panels = 32, h = 1 / panels;
+  let s = 0, comp = 0;
+  const add = (v) => { const t = s + v; comp += Math.abs(s) >= Math.abs(v) ? (s - t) + v : (v - t) + s; s = t; };
+  for (const c of segs) for (let k = 0; k < panels; k++) for (const [x, w] of gl) add(0.5 * h * w * speed(c, k * h + 0.5 * h * (x + 1)));
+  return s + comp;
+}
+
+function timeIt(fn, minMs = 400) {
+  fn(); fn(); // warm up (JIT, wasm tier-up)
+  let iters = 0; const t0 = process.hrtime.bigint(); let t;
+  do { fn(); iters++; t = Number(process.hrtime.bigint() - t0) / 1e6; } while (t < minMs);
+  return t / iters; // ms per call
+}
+
+const path = blob(N);
+const segs = segments(path);
+const truth = referencePerimeter(segs);
+
+const wasmP = core.measure(path).perimeter;
+const simpP = simpsonPerimeter(segs);
+const errW = Math.abs(wasmP - truth) / truth, errS = Math.abs(simpP - truth) / truth;
+
+const msW = timeIt(() => core.measure(path));
+const msS = timeIt(() => simpsonPerimeter(segs));
+const ratio = msS / msW;
+const kb = statSync(here('../core/pkg/dformer_bg.wasm')).size / 1024;
+
+const mark = (ok) => (ok ? 'PASS' : 'MISS');
+const us = (ms) => `${(ms * 1000 / N).toFixed(3)} µs/segment`;
+console.log(`D-former core benchmark — ${N}-segment closed path, Node ${process.version}`);
+console.log(`  reference perimeter (GL20×32 panels): ${truth}`);
+console.log(`  WASM measure():  ${us(msW)} (${msW.toFixed(3)} ms per path; includes input conversion, validation, area, centroid)`);
+console.log(`                   relative error ${errW.toExponential(2)}   ${mark(errW <= TARGET_ERR)} (target ≤ ${TARGET_ERR})`);
+console.log(`  JS adaptive Simpson (tol 1e-5): ${us(msS)} (${msS.toFixed(3)} ms per path), relative error ${errS.toExponential(2)}`);
+console.log(`  speed-up: ${ratio.toFixed(1)}×   ${mark(ratio >= TARGET_RATIO)} (target ≥ ${TARGET_RATIO}×)`);
+console.log(`  wasm size: ${kb.toFixed(1)} KB   ${mark(kb <= TARGET_KB)} (target ≤ ${TARGET_KB} KB; core/pkg/dformer_bg.wasm as built)`);

@@ -1,0 +1,140 @@
+//! Test helpers: an arc length computed independently of the crate (and of kurbo), shape
+//! builders, and closed forms.
+#![allow(dead_code)]
+
+use dformer::api::path::{PathDto, PointDto};
+
+pub type P = [f64; 2];
+
+/// Gauss–Legendre nodes and weights on [-1, 1] by Newton's method on P_n (three-term recurrence).
+pub fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(n);
+    for i in 0..n {
+        let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+        for _ in 0..100 {
+            let (mut p0, mut p1) = (1.0, x);
+            for k in 2..=n {
+                let k = k as f64;
+                let p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            let dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+            let dx = p1 / dp;
+            x -= dx;
+            if dx.abs() < 1e-17 {
+                break;
+            }
+        }
+        let (mut p0, mut p1) = (1.0, x);
+        for k in 2..=n {
+            let k = k as f64;
+            let p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+            p0 = p1;
+            p1 = p2;
+        }
+        let dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+        out.push((x, 2.0 / ((1.0 - x * x) * dp * dp)));
+    }
+    out
+}
+
+/// Neumaier-compensated sum.
+pub fn ksum(xs: impl IntoIterator<Item = f64>) -> f64 {
+    let (mut s, mut c) = (0.0f64, 0.0f64);
+    for x in xs {
+        let t = s + x;
+        c += if s.abs() >= x.abs() { (s - t) + x } else { (x - t) + s };
+        s = t;
+    }
+    s + c
+}
+
+/// Length of the cubic p0..p3 by composite 20-point Gauss–Legendre on `panels` equal panels,
+/// with the speed |B'(t)| evaluated from control-point *differences* (translation-exact) and
+/// compensated summation. Independent of kurbo and of the crate.
+pub fn cubic_len_truth(p: [P; 4], panels: usize) -> f64 {
+    let gl = gauss_legendre(20);
+    let d = |i: usize, k: usize| p[i + 1][k] - p[i][k];
+    let (d0, d1, d2) = ([d(0, 0), d(0, 1)], [d(1, 0), d(1, 1)], [d(2, 0), d(2, 1)]);
+    let speed = |t: f64| {
+        let u = 1.0 - t;
+        let x = 3.0 * (u * u * d0[0] + 2.0 * u * t * d1[0] + t * t * d2[0]);
+        let y = 3.0 * (u * u * d0[1] + 2.0 * u * t * d1[1] + t * t * d2[1]);
+        x.hypot(y)
+    };
+    let h = 1.0 / panels as f64;
+    ksum((0..panels).flat_map(|k| {
+        let a = k as f64 * h;
+        gl.iter().map(move |&(x, w)| 0.5 * h * w * speed(a + 0.5 * h * (x + 1.0))).collect::<Vec<_>>()
+    }))
+}
+
+/// Perimeter of a closed path by [`cubic_len_truth`] on every segment.
+pub fn perimeter_truth(path: &PathDto) -> f64 {
+    let n = path.points.len();
+    ksum((0..n).map(|i| {
+        let a = &path.points[i];
+        let b = &path.points[(i + 1) % n];
+        let p = [a.anchor, a.right.unwrap_or(a.anchor), b.left.unwrap_or(b.anchor), b.anchor];
+        cubic_len_truth(p, 64)
+    }))
+}
+
+/// Ellipse perimeter by the arithmetic–geometric mean (Gauss–Kummer closed form):
+/// `L = 2π/AGM(a, b) · (a² − Σ_{n≥0} 2^{n−1} c_n²)`, `c_0² = a² − b²`, `c_{n+1} = (a_n − b_n)/2`.
+pub fn ellipse_perimeter(a: f64, b: f64) -> f64 {
+    let (mut an, mut bn) = (a.max(b), a.min(b));
+    let mut sum = 0.5 * (an * an - bn * bn);
+    let mut pow = 0.5;
+    for _ in 0..60 {
+        let c = 0.5 * (an - bn);
+        let (a1, b1) = (0.5 * (an + bn), (an * bn).sqrt());
+        an = a1;
+        bn = b1;
+        pow *= 2.0;
+        sum += pow * c * c;
+        if c.abs() < 1e-300 || c == 0.0 {
+            break;
+        }
+    }
+    2.0 * std::f64::consts::PI / an * (a.max(b).powi(2) - sum)
+}
+
+/// Closed path from (anchor, left, right) triples.
+pub fn path(points: &[(P, P, P)]) -> PathDto {
+    PathDto {
+        closed: true,
+        points: points.iter().map(|&(a, l, r)| PointDto { anchor: a, left: Some(l), right: Some(r) }).collect(),
+    }
+}
+
+/// Closed polygon (corners only; handles omitted as the contract allows).
+pub fn polygon(pts: &[P]) -> PathDto {
+    PathDto { closed: true, points: pts.iter().map(|&a| PointDto { anchor: a, left: None, right: None }).collect() }
+}
+
+/// Ellipse (a, b) centred at c as n cubic arcs, the standard circle arc with handle length
+/// `k = 4/3 tan(θ/4)` mapped by diag(a, b); counter-clockwise unless `cw`.
+pub fn ellipse(c: P, a: f64, b: f64, n: usize, cw: bool) -> PathDto {
+    let th = std::f64::consts::TAU / n as f64;
+    let k = 4.0 / 3.0 * (th / 4.0).tan();
+    let s = if cw { -1.0 } else { 1.0 };
+    let pts: Vec<(P, P, P)> = (0..n)
+        .map(|i| {
+            let t = s * th * i as f64;
+            let (sn, cs) = t.sin_cos();
+            let at = [c[0] + a * cs, c[1] + b * sn];
+            // Tangent direction of travel (d/dt of (cos, sin) times s).
+            let tan = [-sn * s, cs * s];
+            let r = [at[0] + a * k * tan[0], at[1] + b * k * tan[1]];
+            let l = [at[0] - a * k * tan[0], at[1] - b * k * tan[1]];
+            (at, l, r)
+        })
+        .collect();
+    path(&pts)
+}
+
+pub fn rel(got: f64, want: f64) -> f64 {
+    (got - want).abs() / want.abs()
+}

@@ -1,0 +1,180 @@
+// The real panel (uxp-panel/index.html) in headless Chromium with a CEP stand-in whose evalScript
+// runs the real ExtendScript bridge in the simulated Illustrator DOM. Requires `node uxp-panel/build.mjs`.
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { artifactPath, launch, serve, waitReady, wasmBuilt } from './support.mjs';
+import { openPanel, SKINS } from './cep-stand-in.mjs';
+import { referenceLength } from '../illustrator/reference-length.mjs';
+import { centroidOfAnchors, distance, inside, sample } from './geometry.mjs';
+
+const MM = 72 / 25.4;
+let server;
+let browser;
+before(async () => {
+  assert.ok(wasmBuilt(), 'uxp-panel/wasm/dformer.js is missing: run `node uxp-panel/build.mjs --dev` first');
+  server = await serve();
+  browser = await launch();
+});
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+/** Every item of a snapshot layer tree, flattened, with its group path. */
+function items(snapshotDoc) {
+  const out = [];
+  const walk = (list, layer, group) => {
+    for (const it of list) {
+      out.push({ ...it, layer, group });
+      if (it.items) walk(it.items, layer, it.name);
+    }
+  };
+  for (const l of snapshotDoc.layers) walk(l.items, l.name, null);
+  return out;
+}
+const lengthOf = (it) => referenceLength({ closed: it.closed, points: it.points.map((p) => ({ anchor: p.a, left: p.l, right: p.r })) });
+
+const TWO_SHAPES = {
+  units: 'mm',
+  shapes: [
+    { name: 'Ellipse', ellipse: { top: 400, left: 0, width: 200, height: 110 } },
+    { name: 'Circle', ellipse: { top: 400, left: 260, width: 150, height: 150 } },
+  ],
+};
+
+test('select two shapes, normalize, add stitching, apply: equal perimeters and paired holes in the document', async () => {
+  const { page, host, errors } = await openPanel(browser, server.url, TWO_SHAPES);
+  await waitReady(page);
+  assert.equal(await page.evaluate(() => document.body.dataset.state), 'ready', `panel not ready: ${await page.textContent('#message')}`);
+  const before = items(host.snapshot()[0]);
+  const [a0, b0] = ['Ellipse', 'Circle'].map((n) => before.find((i) => i.name === n));
+  assert.ok(Math.abs(lengthOf(a0) - lengthOf(b0)) > 1, 'the fixture must start with different perimeters');
+  assert.match(await page.textContent('#selection-summary'), /2 paths selected/);
+  assert.match(await page.textContent('#units-badge'), /mm/);
+
+  await page.selectOption('#norm-target', 'largest');
+  await page.click('#kind button[data-kind="stitch"]');
+  await page.fill('#count', '20');
+  await page.waitForFunction(() => /^20 connectors/.test(document.querySelector('#stats').textContent));
+  const previewHoles = await page.$$eval('#preview .hole', (h) => h.length);
+  assert.equal(previewHoles, 40, `preview holes: wanted 40 (20 per piece), got ${previewHoles}`);
+  assert.deepEqual(items(host.snapshot()[0]), before, 'nothing is written before Apply');
+
+  await page.click('#apply-btn');
+  await page.waitForFunction(() => document.body.dataset.applied);
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', `apply failed: ${await page.textContent('#message')}`);
+
+  const after = items(host.snapshot()[0]);
+  const [a1, b1] = ['Ellipse', 'Circle'].map((n) => after.find((i) => i.name === n && i.typename === 'PathItem'));
+  const [la, lb] = [lengthOf(a1), lengthOf(b1)];
+  const largest = Math.max(lengthOf(a0), lengthOf(b0));
+  assert.ok(Math.abs(la - lb) <= 1e-9 * la, `perimeters after Apply: A ${la}, B ${lb} (wanted equal to 1e-9)`);
+  assert.ok(Math.abs(la - largest) <= 1e-9 * la, `target "largest": wanted ${largest}, got ${la}`);
+
+  // The panel names the pieces A and B in selection (stacking) order; read which item is which.
+  const names = await page.$$eval('#measure-table tr', (rows) => rows.slice(0, 2).map((r) => r.children[1].textContent));
+  const byKey = { A: after.find((i) => i.name === names[0]), B: after.find((i) => i.name === names[1]) };
+  assert.deepEqual([...names].sort(), ['Circle', 'Ellipse'], `measure table names: ${names}`);
+  for (const [key, piece] of Object.entries(byKey)) {
+    const holes = after.filter((i) => i.group === `D-former piece ${key} connectors` && /^hole \d+$/.test(i.name));
+    const labels = after.filter((i) => i.group === `D-former piece ${key} labels` && i.typename === 'TextFrame');
+    const marks = after.filter((i) => i.group === `D-former piece ${key} marks`);
+    assert.equal(holes.length, 20, `piece ${key} holes: wanted 20, got ${holes.length}`);
+    assert.deepEqual(labels.map((l) => Number(l.contents)).sort((x, y) => x - y), Array.from({ length: 20 }, (_, i) => i + 1), `piece ${key} labels 1..20`);
+    assert.ok(marks.length >= 1, `piece ${key}: a start mark`);
+    assert.ok(holes.every((h) => h.layer === 'Cut' && h.strokeColor.rgb.join() === '255,0,0'), `piece ${key}: holes on the red Cut layer`);
+    const outline = sample(piece.points);
+    for (const h of holes) {
+      const c = centroidOfAnchors(h.points);
+      const d = distance(outline, c);
+      assert.ok(inside(outline, c), `piece ${key} ${h.name}: centre ${c} must lie inside the piece`);
+      assert.ok(Math.abs(d - 4 * MM) < 0.01 * 4 * MM, `piece ${key} ${h.name}: distance to edge wanted ${4 * MM} (inset 4 mm), got ${d}`);
+      const dia = Math.max(...h.points.map((p) => Math.hypot(p.a[0] - c[0], p.a[1] - c[1]))) * 2;
+      assert.ok(Math.abs(dia - 2 * MM) < 0.01 * 2 * MM, `piece ${key} ${h.name}: diameter wanted ${2 * MM}, got ${dia}`);
+    }
+  }
+  assert.deepEqual(errors, [], 'no page errors');
+  await page.close();
+});
+
+test('an open path in the selection: message shown, Apply disabled, document untouched', async () => {
+  const { page, host } = await openPanel(browser, server.url, {
+    units: 'mm',
+    shapes: [
+      { name: 'A', ellipse: { top: 300, left: 0, width: 120, height: 80 } },
+      { name: 'open', polygon: [[200, 300], [300, 300], [300, 200]], closed: false },
+    ],
+  });
+  await waitReady(page);
+  const snap = JSON.stringify(host.snapshot());
+  const message = await page.textContent('#message');
+  assert.match(message, /open/i, `wanted an "open path" message, got "${message}"`);
+  assert.equal(await page.isDisabled('#apply-btn'), true, 'Apply must be disabled');
+  await page.click('#apply-btn', { force: true });
+  await page.waitForTimeout(200);
+  assert.equal(JSON.stringify(host.snapshot()), snap, 'the document must be unchanged');
+  await page.close();
+});
+
+test('Illustrator refuses the write (layer locked after reading): message shown, document untouched', async () => {
+  const { page, host } = await openPanel(browser, server.url, TWO_SHAPES);
+  await waitReady(page);
+  assert.equal(await page.evaluate(() => document.body.dataset.state), 'ready');
+  host.doc.layers.getByName('Layer 1').locked = true;
+  const snap = JSON.stringify(host.snapshot());
+  await page.click('#apply-btn');
+  await page.waitForFunction(() => document.body.dataset.applied);
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'error');
+  const message = await page.textContent('#message');
+  assert.match(message, /lock/i, `wanted the bridge's "locked" message, got "${message}"`);
+  assert.equal(JSON.stringify(host.snapshot()), snap, 'the document must be unchanged');
+  await page.close();
+});
+
+test('theme follows Illustrator brightness (dark → light on ThemeColorChanged); screenshots', async () => {
+  const { page } = await openPanel(browser, server.url, TWO_SHAPES, { skin: SKINS.dark });
+  await waitReady(page);
+  assert.equal(await page.evaluate(() => document.body.className), 'theme-dark');
+  assert.equal(await page.evaluate(() => getComputedStyle(document.body).backgroundColor), 'rgb(50, 50, 50)');
+  await page.screenshot({ path: artifactPath('panel-dark.png') });
+  await page.evaluate((rgb) => window.__setSkin(rgb), SKINS.light);
+  await page.waitForFunction(() => document.body.classList.contains('theme-light'));
+  assert.equal(await page.evaluate(() => getComputedStyle(document.body).backgroundColor), 'rgb(240, 240, 240)');
+  await page.screenshot({ path: artifactPath('panel-light.png') });
+  await page.close();
+});
+
+test('"start at the selected anchor": connector 1 sits at the anchor picked with Direct Selection (float32 document)', async () => {
+  const { page, host } = await openPanel(browser, server.url, {
+    units: 'pt',
+    float32: true,
+    shapes: [
+      { name: 'Square', rect: { top: 300, left: 0, width: 120, height: 120 }, selectedAnchors: [1] },
+      { name: 'Disc', ellipse: { top: 300, left: 200, width: 150, height: 150 } },
+    ],
+  });
+  await waitReady(page);
+  const names = await page.$$eval('#measure-table tr', (rows) => rows.slice(0, 2).map((r) => r.children[1].textContent));
+  const squareIndex = names.indexOf('Square');
+  assert.ok(squareIndex >= 0, `Square in the measure table: ${names}`);
+  const row = `.start[data-piece="${squareIndex}"] .start-mode`;
+  await page.selectOption(row, 'selected');
+  await page.fill('#count', '12');
+  await page.waitForFunction(() => /^12 connectors/.test(document.querySelector('#stats').textContent));
+  await page.click('#apply-btn');
+  await page.waitForFunction(() => document.body.dataset.applied);
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#message'));
+  const all = items(host.snapshot()[0]);
+  const square = all.find((i) => i.name === 'Square' && i.typename === 'PathItem');
+  const disc = all.find((i) => i.name === 'Disc' && i.typename === 'PathItem');
+  const key = squareIndex === 0 ? 'A' : 'B';
+  const hole1 = all.find((i) => i.group === `D-former piece ${key} connectors` && i.name === 'hole 1');
+  const c = centroidOfAnchors(hole1.points);
+  const nearest = square.points
+    .map((p, i) => ({ i, d: Math.hypot(p.a[0] - c[0], p.a[1] - c[1]) }))
+    .sort((x, y) => x.d - y.d)[0];
+  assert.equal(nearest.i, 1, `hole 1 should sit at the selected anchor 1 (index 1); nearest anchor is ${nearest.i} (${nearest.d} pt away)`);
+  const [ls, ld] = [lengthOf(square), lengthOf(disc)];
+  assert.ok(Math.abs(ls - ld) <= 1e-6 * ls, `perimeters in a float32 document: ${ls} vs ${ld} (wanted equal to 1e-6)`);
+  await page.close();
+});

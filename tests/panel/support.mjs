@@ -1,0 +1,61 @@
+// Shared helpers for the panel tests: a static HTTP server for uxp-panel/ (port 0), Chromium via
+// playwright-core, and an independent reader for the laser SVG.
+import { createServer } from 'node:http';
+import { existsSync, mkdirSync, readFileSync, statSync } from 'node:fs';
+import { dirname, extname, join, normalize } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+export const repo = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+export const panelDir = join(repo, 'uxp-panel');
+export const artifacts = join(repo, 'test-artifacts');
+
+const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.wasm': 'application/wasm', '.svg': 'image/svg+xml' };
+
+/** Serves `root` on 127.0.0.1 at a free port; resolves to { url, close }. */
+export function serve(root = panelDir) {
+  const server = createServer((req, res) => {
+    const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)).replace(/^(\.\.[/\\])+/, '');
+    let file = join(root, path);
+    if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
+    if (!file.startsWith(root) || !existsSync(file)) {
+      res.writeHead(404);
+      res.end('not found');
+      return;
+    }
+    res.writeHead(200, { 'content-type': TYPES[extname(file)] || 'application/octet-stream' });
+    res.end(readFileSync(file));
+  });
+  return new Promise((resolve) => {
+    server.listen(0, '127.0.0.1', () => {
+      const { port } = server.address();
+      resolve({ url: `http://127.0.0.1:${port}/`, close: () => new Promise((r) => server.close(r)) });
+    });
+  });
+}
+
+export function launch() {
+  return chromium.launch({
+    executablePath: '/usr/bin/chromium',
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update'],
+  });
+}
+
+export function artifactPath(name) {
+  mkdirSync(artifacts, { recursive: true });
+  return join(artifacts, name);
+}
+
+/** Fails fast with the panel's own message when the page reports an error state. */
+export async function waitReady(page, what = 'ready') {
+  await page.waitForFunction(() => document.body.dataset.core === 'loaded' || document.body.dataset.core === 'error', null, { timeout: 20000 });
+  const core = await page.evaluate(() => document.body.dataset.core);
+  if (core !== 'loaded') throw new Error(`core failed to load: ${await page.textContent('#message')}`);
+  if (what === 'ready') {
+    await page.waitForFunction(() => document.body.dataset.state === 'ready' || (document.body.dataset.state === 'error' && document.querySelector('#message').textContent), null, { timeout: 20000 });
+  }
+}
+
+export function wasmBuilt() {
+  return existsSync(join(panelDir, 'wasm', 'dformer.js'));
+}
