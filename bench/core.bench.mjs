@@ -43,7 +43,7 @@ function speed(c, t) {
   const u = 1 - t;
   const x = 3 * (u * u * (c[1][0] - c[0][0]) + 2 * u * t * (c[2][0] - c[1][0]) + t * t * (c[3][0] - c[2][0]));
   const y = 3 * (u * u * (c[1][1] - c[0][1]) + 2 * u * t * (c[2][1] - c[1][1]) + t * t * (c[3][1] - c[2][1]));
-  return Math.hypot(x, y);
+  return Math.sqrt(x * x + y * y); // as ExtendScript (ES3, no Math.hypot) scripts wrote it
 }
 
 // The baseline: adaptive Simpson on |B'(t)| with tolerance 1e-5 per segment, as the earlier

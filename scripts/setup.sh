@@ -42,11 +42,17 @@ if [ ! -d node_modules ] || [ package-lock.json -nt node_modules/.package-lock.j
   npm ci --no-audit --no-fund --loglevel=error
 fi
 
-# 5. For the full test suite: Debian's Chromium (Playwright drives it) and Inkscape 1.x.
+# 5. For the full test suite: Debian's Chromium (Playwright drives it), Inkscape 1.x with the
+#    Python modules its extensions import, and Xvfb (Inkscape registers extension actions only
+#    with a display).
 if [ "$want_all" = 1 ]; then
   missing=()
   command -v chromium >/dev/null || missing+=(chromium)
   command -v inkscape >/dev/null || missing+=(inkscape)
+  command -v xvfb-run >/dev/null || missing+=(xvfb)
+  command -v xauth >/dev/null || missing+=(xauth)
+  /usr/bin/python3 -c 'import lxml' 2>/dev/null || missing+=(python3-lxml)
+  /usr/bin/python3 -c 'import numpy' 2>/dev/null || missing+=(python3-numpy)
   if [ ${#missing[@]} -gt 0 ]; then
     say "installing ${missing[*]} from Debian"
     sudo_cmd=""

@@ -18,3 +18,6 @@ bash scripts/build-wasm.sh
 
 step "Node tests (node --test)"
 node --test tests/
+
+step "Inkscape extension and dformer CLI (unittest, real Inkscape)"
+bash tests/inkscape/run.sh

@@ -1,12 +1,14 @@
 #!/usr/bin/env node
 // Builds the D-former panel:
 //   1. compiles the core for WebAssembly *MVP* (`-C target-cpu=mvp`) so old CEP Chromiums can run it,
-//   2. runs wasm-bindgen with `--target no-modules` (a classic script: CEP 8's Chromium 57 has no
-//      ES modules) into uxp-panel/wasm/, plus the bytes inlined as base64 (CEP will not fetch()
-//      file:// URLs; inlining avoids needing Node.js in the panel),
-//   3. scans the .wasm for post-MVP features and sets the manifest's minimum Illustrator version to
+//   2. runs wasm-bindgen `--target web` (the only target that keeps the core's `inline_js`
+//      snippets) and bundles glue + snippets with esbuild into ONE classic script (IIFE, global
+//      `dformerWasm`) whose syntax is lowered to Chromium 57 (CEP 8 has no ES modules, no `??`),
+//   3. lowers the standard library's post-MVP instructions (tools/wasm-lower-mvp.mjs) and inlines
+//      the bytes as base64 (CEP will not fetch() file:// URLs; inlining avoids Node.js in the panel),
+//   4. scans the .wasm for post-MVP features left and sets the manifest's minimum CEP/Illustrator to
 //      the oldest CEP whose Chromium can instantiate it (tools/wasm-features.mjs),
-//   4. assembles the installable extension folder dist/com.dformer.panel/ (panel + jsx bridge) and
+//   5. assembles the installable extension folder dist/com.dformer.panel/ (panel + jsx bridge) and
 //      the standalone browser app dist/d-former-web/.
 // Usage: node uxp-panel/build.mjs [--dev] [--skip-wasm]
 import { execFileSync } from 'node:child_process';
@@ -14,6 +16,7 @@ import { cpSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } fr
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { minimumCep, scanWasmFeatures } from './tools/wasm-features.mjs';
+import { lowerToMvp } from './tools/wasm-lower-mvp.mjs';
 
 const panel = dirname(fileURLToPath(import.meta.url));
 const repo = dirname(panel);
@@ -60,7 +63,7 @@ function stripTargetFeatures(bytes) {
   return Buffer.concat(out);
 }
 
-function buildWasm() {
+async function buildWasm() {
   const targetDir =
     process.env.DFORMER_PANEL_TARGET_DIR ||
     (process.env.CARGO_TARGET_DIR ? `${process.env.CARGO_TARGET_DIR}-cep-mvp` : join(repo, 'target', 'cep-mvp'));
@@ -73,13 +76,31 @@ function buildWasm() {
   const stripped = join(targetDir, 'dformer-mvp.wasm');
   writeFileSync(stripped, stripTargetFeatures(readFileSync(built)));
   rmSync(wasmDir, { recursive: true, force: true });
-  mkdirSync(wasmDir, { recursive: true });
-  execFileSync('wasm-bindgen', [stripped, '--target', 'no-modules', '--no-typescript', '--out-dir', wasmDir, '--out-name', 'dformer'], {
+  const web = join(targetDir, 'panel-web');
+  rmSync(web, { recursive: true, force: true });
+  execFileSync('wasm-bindgen', [stripped, '--target', 'web', '--no-typescript', '--out-dir', web, '--out-name', 'dformer'], {
     stdio: 'inherit',
+  });
+  mkdirSync(wasmDir, { recursive: true });
+  const lowered = lowerToMvp(readFileSync(join(web, 'dformer_bg.wasm')));
+  console.log(`[panel] lowered to MVP: ${JSON.stringify(lowered.lowered)}`);
+  writeFileSync(join(wasmDir, 'dformer_bg.wasm'), lowered.bytes);
+  const esbuild = await import('esbuild');
+  await esbuild.build({
+    entryPoints: [join(web, 'dformer.js')],
+    bundle: true,
+    format: 'iife',
+    globalName: 'dformerWasm',
+    target: 'chrome57',
+    // The glue's default .wasm URL (import.meta.url) is never used: core.js always passes the bytes.
+    define: { 'import.meta.url': 'document.baseURI' },
+    banner: { js: '/* D-former core: wasm-bindgen glue (+ inline_js snippets) bundled by uxp-panel/build.mjs for Chromium 57. */' },
+    outfile: join(wasmDir, 'dformer.js'),
+    logLevel: 'warning',
   });
 }
 
-if (!args.has('--skip-wasm') || !existsSync(join(wasmDir, 'dformer_bg.wasm'))) buildWasm();
+if (!args.has("--skip-wasm") || !existsSync(join(wasmDir, "dformer_bg.wasm"))) await buildWasm();
 const wasm = readFileSync(join(wasmDir, 'dformer_bg.wasm'));
 writeFileSync(
   join(wasmDir, 'dformer-wasm-inline.js'),

@@ -10,7 +10,9 @@ use kurbo::{Affine, Point};
 use serde_json::{json, Value};
 
 /// Geometry attributes a shape loses when rewritten as a `<path>`.
-const GEOMETRY: &[&str] = &["x", "y", "width", "height", "rx", "ry", "cx", "cy", "r", "points", "x1", "y1", "x2", "y2", "d"];
+const GEOMETRY: &[&str] = &[
+    "x", "y", "width", "height", "rx", "ry", "cx", "cy", "r", "points", "x1", "y1", "x2", "y2", "d",
+];
 const SODIPODI_NS: &str = "http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd";
 
 /// Maps anchors and handles through an affine map (exact for Bézier curves).
@@ -29,14 +31,22 @@ pub fn map_path(path: &PathDto, a: Affine) -> PathDto {
 }
 
 /// The shapes to work on: those named by `ids` (in that order), or every shape in the file.
-pub fn pick<'a, 'i>(file: &'a SvgFile<'i>, ids: &[String], min: usize, max: Option<usize>) -> Result<Vec<Shape<'a, 'i>>, String> {
+pub fn pick<'a, 'i>(
+    file: &'a SvgFile<'i>,
+    ids: &[String],
+    min: usize,
+    max: Option<usize>,
+) -> Result<Vec<Shape<'a, 'i>>, String> {
     let all = file.shapes()?;
     let chosen = if ids.is_empty() {
         all
     } else {
         ids.iter()
             .map(|id| {
-                all.iter().find(|s| s.node.attribute("id") == Some(id.as_str())).cloned().ok_or_else(|| format!("no shape with id \"{id}\" in the file"))
+                all.iter()
+                    .find(|s| s.node.attribute("id") == Some(id.as_str()))
+                    .cloned()
+                    .ok_or_else(|| format!("no shape with id \"{id}\" in the file"))
             })
             .collect::<Result<Vec<_>, _>>()?
     };
@@ -47,7 +57,10 @@ pub fn pick<'a, 'i>(file: &'a SvgFile<'i>, ids: &[String], min: usize, max: Opti
             _ => format!("at least {min}"),
         };
         let names: Vec<&str> = chosen.iter().map(|s| s.name.as_str()).collect();
-        return Err(format!("{want} shapes are needed, found {n} ({}); choose them with --id", names.join(", ")));
+        return Err(format!(
+            "{want} shapes are needed, found {n} ({}); choose them with --id",
+            names.join(", ")
+        ));
     }
     Ok(chosen)
 }
@@ -72,18 +85,33 @@ pub fn read(shapes: &[Shape]) -> Result<Vec<PathDto>, String> {
 
 /// Path data of a root-user-space path in the shape's local coordinates.
 fn local_d(shape: &Shape, path: &PathDto) -> Result<String, String> {
-    let inverse = if shape.ctm.determinant().abs() > 0.0 { shape.ctm.inverse() } else {
-        return Err(format!("{} has a transform that flattens it to nothing", shape.name));
+    let inverse = if shape.ctm.determinant().abs() > 0.0 {
+        shape.ctm.inverse()
+    } else {
+        return Err(format!(
+            "{} has a transform that flattens it to nothing",
+            shape.name
+        ));
     };
     api::svg::path_to_svg(&map_path(path, inverse)).map_err(|e| e.to_string())
 }
 
 /// Gives the shape a new outline: a `<path>`'s `d` is replaced (Inkscape's sodipodi shape data
 /// dropped, so Inkscape does not regenerate the old shape); other shapes become `<path>`.
-fn replace_outline(source: &str, shape: &Shape, path: &PathDto, edits: &mut Edits) -> Result<(), String> {
+fn replace_outline(
+    source: &str,
+    shape: &Shape,
+    path: &PathDto,
+    edits: &mut Edits,
+) -> Result<(), String> {
     let node = shape.node;
-    if node.attribute((INKSCAPE_NS, "path-effect")).is_some() || node.attribute((INKSCAPE_NS, "original-d")).is_some() {
-        return Err(format!("{} has a live path effect; convert it with Object to Path first", shape.name));
+    if node.attribute((INKSCAPE_NS, "path-effect")).is_some()
+        || node.attribute((INKSCAPE_NS, "original-d")).is_some()
+    {
+        return Err(format!(
+            "{} has a live path effect; convert it with Object to Path first",
+            shape.name
+        ));
     }
     let d = escape(&local_d(shape, path)?);
     if node.tag_name().name() == "path" {
@@ -126,22 +154,43 @@ pub fn measure(file: &SvgFile, ids: &[String], as_json: bool) -> Result<String, 
         let perimeter = file.scale.to_unit(m.perimeter);
         let area = m.area * file.scale.to_unit(1.0).powi(2);
         // The core reports orientation for y-up; SVG user space is y-down.
-        let screen = if m.orientation == "ccw" { "clockwise" } else { "counter-clockwise" };
-        text.push_str(&format!("{}\tperimeter {perimeter:.6} {unit}\tarea {area:.6} {unit}²\t{screen} on screen\n", s.name));
+        let screen = if m.orientation == "ccw" {
+            "clockwise"
+        } else {
+            "counter-clockwise"
+        };
+        text.push_str(&format!(
+            "{}\tperimeter {perimeter:.6} {unit}\tarea {area:.6} {unit}²\t{screen} on screen\n",
+            s.name
+        ));
         rows.push(json!({ "id": s.key, "perimeter": perimeter, "area": area, "unit": unit, "direction": screen }));
     }
-    Ok(if as_json { format!("{}\n", Value::Array(rows)) } else { text })
+    Ok(if as_json {
+        format!("{}\n", Value::Array(rows))
+    } else {
+        text
+    })
 }
 
 /// `dformer normalize`: every chosen shape scaled to the common perimeter, in place.
-pub fn normalize(source: &str, file: &SvgFile, ids: &[String], target: &str, pivot: &str) -> Result<(String, String), String> {
+pub fn normalize(
+    source: &str,
+    file: &SvgFile,
+    ids: &[String],
+    target: &str,
+    pivot: &str,
+) -> Result<(String, String), String> {
     let shapes = pick(file, ids, 2, None)?;
     let paths = read(&shapes)?;
     let target = match target {
         "largest" | "smallest" | "mean" | "first" => json!(target),
-        length => json!(file.scale.parse_user(length).map_err(|e| format!("--target: {e}"))?),
+        length => json!(file
+            .scale
+            .parse_user(length)
+            .map_err(|e| format!("--target: {e}"))?),
     };
-    let options = serde_json::from_value(json!({ "target": target, "pivot": pivot })).map_err(|e| e.to_string())?;
+    let options = serde_json::from_value(json!({ "target": target, "pivot": pivot }))
+        .map_err(|e| e.to_string())?;
     let result = api::normalize::normalize(&paths, &options).map_err(|e| e.to_string())?;
     let mut edits = Edits::default();
     for (s, p) in shapes.iter().zip(&result.paths) {
@@ -152,7 +201,12 @@ pub fn normalize(source: &str, file: &SvgFile, ids: &[String], target: &str, piv
         shapes.len(),
         file.scale.to_unit(result.perimeter),
         file.scale.unit,
-        result.scales.iter().map(|k| format!("{k:.6}")).collect::<Vec<_>>().join(", ")
+        result
+            .scales
+            .iter()
+            .map(|k| format!("{k:.6}"))
+            .collect::<Vec<_>>()
+            .join(", ")
     );
     Ok((edits.apply(source)?, report))
 }
@@ -175,10 +229,23 @@ pub struct ConnectArgs {
 }
 
 /// `dformer connect`: paired connectors on the two chosen shapes, written as laser layers.
-pub fn connect(source: &str, file: &SvgFile, ids: &[String], a: &ConnectArgs) -> Result<(String, String), String> {
+pub fn connect(
+    source: &str,
+    file: &SvgFile,
+    ids: &[String],
+    a: &ConnectArgs,
+) -> Result<(String, String), String> {
     let shapes = pick(file, ids, 2, Some(2))?;
     let paths = read(&shapes)?;
-    let len = |name: &str, v: &Option<String>| v.as_deref().map(|t| file.scale.parse_user(t).map_err(|e| format!("--{name}: {e}"))).transpose();
+    let len = |name: &str, v: &Option<String>| {
+        v.as_deref()
+            .map(|t| {
+                file.scale
+                    .parse_user(t)
+                    .map_err(|e| format!("--{name}: {e}"))
+            })
+            .transpose()
+    };
     let start = match &a.start {
         Some([sa, sb]) => Some([file.scale.parse_user(sa)?, file.scale.parse_user(sb)?]),
         None => None,
@@ -207,21 +274,50 @@ pub fn connect(source: &str, file: &SvgFile, ids: &[String], a: &ConnectArgs) ->
         if a.kind != "stitch" {
             replace_outline(source, s, &piece.outline, &mut edits)?;
         }
-        let svg_of = |paths: Vec<&PathDto>| paths.into_iter().map(|p| api::svg::path_to_svg(p).map_err(|e| e.to_string())).collect::<Result<Vec<_>, _>>();
+        let svg_of = |paths: Vec<&PathDto>| {
+            paths
+                .into_iter()
+                .map(|p| api::svg::path_to_svg(p).map_err(|e| e.to_string()))
+                .collect::<Result<Vec<_>, _>>()
+        };
         let holes = svg_of(piece.holes.iter().map(|h| &h.path).collect())?;
         let marks = svg_of(piece.marks.iter().collect())?;
         if !holes.is_empty() {
             let body = laser::paths("cut", &format!("dformer-hole-{}", s.key), &holes, hairline);
-            groups.push(Group { layer: "cut", piece_key: s.key.clone(), title: format!("{title}: holes"), body });
+            groups.push(Group {
+                layer: "cut",
+                piece_key: s.key.clone(),
+                title: format!("{title}: holes"),
+                body,
+            });
         }
         if !marks.is_empty() {
-            let body = laser::paths("score", &format!("dformer-mark-{}", s.key), &marks, hairline);
-            groups.push(Group { layer: "score", piece_key: s.key.clone(), title: format!("{title}: start"), body });
+            let body = laser::paths(
+                "score",
+                &format!("dformer-mark-{}", s.key),
+                &marks,
+                hairline,
+            );
+            groups.push(Group {
+                layer: "score",
+                piece_key: s.key.clone(),
+                title: format!("{title}: start"),
+                body,
+            });
         }
         if a.labels {
-            let items: Vec<_> = piece.labels.iter().map(|l| (l.text.clone(), l.at, l.angle)).collect();
+            let items: Vec<_> = piece
+                .labels
+                .iter()
+                .map(|l| (l.text.clone(), l.at, l.angle))
+                .collect();
             let body = laser::labels(&format!("dformer-label-{}", s.key), &items, font);
-            groups.push(Group { layer: "engrave", piece_key: s.key.clone(), title: format!("{title}: numbers"), body });
+            groups.push(Group {
+                layer: "engrave",
+                piece_key: s.key.clone(),
+                title: format!("{title}: numbers"),
+                body,
+            });
         }
     }
     laser::write(source, file.doc.root_element(), &groups, &mut edits)?;

@@ -8,8 +8,11 @@ use crate::splice::{end_tag_start, escape, namespaces, Edits};
 use roxmltree::Node;
 
 /// (layer key, label, colour).
-pub const LAYERS: [(&str, &str, &str); 3] =
-    [("cut", "D-former cut", "#ff0000"), ("score", "D-former score", "#0000ff"), ("engrave", "D-former engrave", "#000000")];
+pub const LAYERS: [(&str, &str, &str); 3] = [
+    ("cut", "D-former cut", "#ff0000"),
+    ("score", "D-former score", "#0000ff"),
+    ("engrave", "D-former engrave", "#000000"),
+];
 
 /// A hairline: 0.001 in, in CSS px (divide by px per user unit for user units).
 pub const HAIRLINE_PX: f64 = 0.096;
@@ -24,15 +27,29 @@ pub struct Group {
 }
 
 fn colour(layer: &str) -> &'static str {
-    LAYERS.iter().find(|l| l.0 == layer).map(|l| l.2).unwrap_or("#000000")
+    LAYERS
+        .iter()
+        .find(|l| l.0 == layer)
+        .map(|l| l.2)
+        .unwrap_or("#000000")
 }
 
 /// `<path>` children for path data strings, hairline in the layer's colour.
 pub fn paths(layer: &str, ids: &str, data: &[String], hairline_user: f64) -> String {
-    let style = format!("fill:none;stroke:{};stroke-width:{hairline_user:.6}", colour(layer));
+    let style = format!(
+        "fill:none;stroke:{};stroke-width:{hairline_user:.6}",
+        colour(layer)
+    );
     data.iter()
         .enumerate()
-        .map(|(k, d)| format!("<path id=\"{}-{}\" style=\"{style}\" d=\"{}\"/>", escape(ids), k + 1, escape(d)))
+        .map(|(k, d)| {
+            format!(
+                "<path id=\"{}-{}\" style=\"{style}\" d=\"{}\"/>",
+                escape(ids),
+                k + 1,
+                escape(d)
+            )
+        })
         .collect()
 }
 
@@ -70,12 +87,22 @@ pub fn write(source: &str, root: Node, groups: &[Group], edits: &mut Edits) -> R
         let mut xml = String::new();
         for g in &mine {
             let gid = format!("dformer-{key}-{}", g.piece_key);
-            xml.push_str(&format!("\n  <g id=\"{}\" {ink}:label=\"{}\">{}</g>", escape(&gid), escape(&g.title), g.body));
-            if let Some(old) = root.descendants().find(|n| n.attribute("id") == Some(gid.as_str())) {
+            xml.push_str(&format!(
+                "\n  <g id=\"{}\" {ink}:label=\"{}\">{}</g>",
+                escape(&gid),
+                escape(&g.title),
+                g.body
+            ));
+            if let Some(old) = root
+                .descendants()
+                .find(|n| n.attribute("id") == Some(gid.as_str()))
+            {
                 edits.replace(old.range(), String::new());
             }
         }
-        let existing = root.descendants().find(|n| n.attribute("id") == Some(layer_id.as_str()));
+        let existing = root
+            .descendants()
+            .find(|n| n.attribute("id") == Some(layer_id.as_str()));
         match existing.and_then(|layer| end_tag_start(source, layer)) {
             Some(at) => edits.replace(at..at, format!("{xml}\n")),
             None => {

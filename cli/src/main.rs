@@ -16,7 +16,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 #[derive(Parser)]
-#[command(name = "dformer", version, about = "D-former: equal perimeters and paired connectors for D-forms")]
+#[command(
+    name = "dformer",
+    version,
+    about = "D-former: equal perimeters and paired connectors for D-forms"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -122,7 +126,10 @@ enum Command {
 fn run_json() -> ExitCode {
     let mut text = String::new();
     if let Err(e) = std::io::stdin().read_to_string(&mut text) {
-        println!("{}", serde_json::json!({ "error": format!("could not read stdin: {e}") }));
+        println!(
+            "{}",
+            serde_json::json!({ "error": format!("could not read stdin: {e}") })
+        );
         return ExitCode::FAILURE;
     }
     let (answer, ok) = protocol::answer_text(&text);
@@ -130,13 +137,19 @@ fn run_json() -> ExitCode {
     if writeln!(stdout, "{answer}").is_err() {
         return ExitCode::FAILURE;
     }
-    if ok { ExitCode::SUCCESS } else { ExitCode::FAILURE }
+    if ok {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::FAILURE
+    }
 }
 
 fn read_input(path: &PathBuf) -> Result<String, String> {
     if path.as_os_str() == "-" {
         let mut text = String::new();
-        std::io::stdin().read_to_string(&mut text).map_err(|e| format!("could not read stdin: {e}"))?;
+        std::io::stdin()
+            .read_to_string(&mut text)
+            .map_err(|e| format!("could not read stdin: {e}"))?;
         Ok(text)
     } else {
         std::fs::read_to_string(path).map_err(|e| format!("could not read {}: {e}", path.display()))
@@ -145,8 +158,12 @@ fn read_input(path: &PathBuf) -> Result<String, String> {
 
 fn write_output(out: &OutArgs, text: &str) -> Result<(), String> {
     match &out.output {
-        Some(p) if p.as_os_str() != "-" => std::fs::write(p, text).map_err(|e| format!("could not write {}: {e}", p.display())),
-        _ => std::io::stdout().write_all(text.as_bytes()).map_err(|e| format!("could not write stdout: {e}")),
+        Some(p) if p.as_os_str() != "-" => {
+            std::fs::write(p, text).map_err(|e| format!("could not write {}: {e}", p.display()))
+        }
+        _ => std::io::stdout()
+            .write_all(text.as_bytes())
+            .map_err(|e| format!("could not write stdout: {e}")),
     }
 }
 
@@ -159,7 +176,12 @@ fn run_svg(command: Command) -> Result<(), String> {
             print!("{}", batch::measure(&svg, &file.ids, json)?);
             Ok(())
         }
-        Command::Normalize { file, out, target, pivot } => {
+        Command::Normalize {
+            file,
+            out,
+            target,
+            pivot,
+        } => {
             let source = read_input(&file.input)?;
             let svg = svgdoc::SvgFile::parse(&source, file.unit.as_deref())?;
             let (text, report) = batch::normalize(&source, &svg, &file.ids, &target, &pivot)?;
@@ -168,7 +190,21 @@ fn run_svg(command: Command) -> Result<(), String> {
             Ok(())
         }
         Command::Connect {
-            file, out, kind, count, pitch, slide, start, inset, diameter, length, angle, invert, kerf, label_size, no_labels,
+            file,
+            out,
+            kind,
+            count,
+            pitch,
+            slide,
+            start,
+            inset,
+            diameter,
+            length,
+            angle,
+            invert,
+            kerf,
+            label_size,
+            no_labels,
         } => {
             let source = read_input(&file.input)?;
             let svg = svgdoc::SvgFile::parse(&source, file.unit.as_deref())?;

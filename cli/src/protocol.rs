@@ -6,6 +6,7 @@
 //! {"op": "measure", "path": {"closed": true, "points": [...]}, "accuracy": 1e-9}
 //! {"op": "normalize", "paths": [...], "options": {"target": "largest"}}
 //! {"op": "connect", "pieces": [...], "options": {"kind": "stitch", "count": 40}}
+//! {"op": "simulate", "pieces": [...], "options": {"offset": 0, "resolution": 128}}
 //! {"op": "pathFromSvg", "d": "M 0 0 L 10 0 ..."}
 //! {"op": "pathToSvg", "path": {...}}
 //! {"op": "DEFAULT_ACCURACY"}
@@ -22,13 +23,22 @@ use serde::Serialize;
 use serde_json::{json, Map, Value};
 
 /// Every operation name [`call`] understands, for messages and `--help`.
-pub const OPERATIONS: &[&str] = &["measure", "normalize", "connect", "pathFromSvg", "pathToSvg", "DEFAULT_ACCURACY"];
+pub const OPERATIONS: &[&str] = &[
+    "measure",
+    "normalize",
+    "connect",
+    "pathFromSvg",
+    "pathToSvg",
+    "DEFAULT_ACCURACY",
+];
 
 /// Reads argument `name` of the request as the DTO the core expects. A missing required
 /// argument or a wrong shape is the core's `Invalid input` error naming the argument.
 fn arg<T: DeserializeOwned>(request: &Map<String, Value>, name: &str) -> Result<T, Error> {
     let value = request.get(name).cloned().unwrap_or(Value::Null);
-    serde_json::from_value(value).map_err(|e| Error::Shape { detail: format!("{name}: {e}") })
+    serde_json::from_value(value).map_err(|e| Error::Shape {
+        detail: format!("{name}: {e}"),
+    })
 }
 
 /// Like [`arg`], but an absent or `null` argument is the empty object (all options defaulted).
@@ -37,25 +47,44 @@ fn options<T: DeserializeOwned>(request: &Map<String, Value>) -> Result<T, Error
         None | Some(Value::Null) => Value::Object(Map::new()),
         Some(v) => v.clone(),
     };
-    serde_json::from_value(value).map_err(|e| Error::Shape { detail: format!("options: {e}") })
+    serde_json::from_value(value).map_err(|e| Error::Shape {
+        detail: format!("options: {e}"),
+    })
 }
 
 fn out<T: Serialize>(value: T) -> Result<Value, Error> {
-    serde_json::to_value(value)
-        .map_err(|e| Error::Shape { detail: format!("internal error while returning the result: {e}") })
+    serde_json::to_value(value).map_err(|e| Error::Shape {
+        detail: format!("internal error while returning the result: {e}"),
+    })
 }
 
 /// Runs one operation on its JSON arguments; `Err` carries the core's message.
 pub fn call(op: &str, request: &Map<String, Value>) -> Result<Value, Error> {
     match op {
-        "measure" => out(api::measure(&arg(request, "path")?, arg(request, "accuracy")?)?),
-        "normalize" => out(api::normalize::normalize(&arg::<Vec<_>>(request, "paths")?, &options(request)?)?),
-        "connect" => out(api::connect::connect(&arg::<Vec<_>>(request, "pieces")?, &options(request)?)?),
+        "measure" => out(api::measure(
+            &arg(request, "path")?,
+            arg(request, "accuracy")?,
+        )?),
+        "normalize" => out(api::normalize::normalize(
+            &arg::<Vec<_>>(request, "paths")?,
+            &options(request)?,
+        )?),
+        "connect" => out(api::connect::connect(
+            &arg::<Vec<_>>(request, "pieces")?,
+            &options(request)?,
+        )?),
+        "simulate" => out(api::simulate::simulate(
+            &arg::<Vec<_>>(request, "pieces")?,
+            &options(request)?,
+        )?),
         "pathFromSvg" => out(api::svg::path_from_svg(&arg::<String>(request, "d")?)?),
         "pathToSvg" => out(api::svg::path_to_svg(&arg(request, "path")?)?),
         "DEFAULT_ACCURACY" => out(dformer::DEFAULT_ACCURACY),
         other => Err(Error::Shape {
-            detail: format!("unknown operation `{other}`; this build knows: {}", OPERATIONS.join(", ")),
+            detail: format!(
+                "unknown operation `{other}`; this build knows: {}",
+                OPERATIONS.join(", ")
+            ),
         }),
     }
 }
@@ -63,11 +92,19 @@ pub fn call(op: &str, request: &Map<String, Value>) -> Result<Value, Error> {
 /// Answers one request object: the result, or `{"error": message}`.
 pub fn answer(request: &Value) -> (Value, bool) {
     let Some(object) = request.as_object() else {
-        return (json!({ "error": "Invalid input: a request must be a JSON object like {\"op\": \"measure\", \"path\": {...}}" }), false);
+        return (
+            json!({ "error": "Invalid input: a request must be a JSON object like {\"op\": \"measure\", \"path\": {...}}" }),
+            false,
+        );
     };
     let op = match object.get("op") {
         Some(Value::String(op)) => op.as_str(),
-        _ => return (json!({ "error": "Invalid input: the request has no \"op\" naming the operation" }), false),
+        _ => {
+            return (
+                json!({ "error": "Invalid input: the request has no \"op\" naming the operation" }),
+                false,
+            )
+        }
     };
     match call(op, object) {
         Ok(value) => (value, true),
@@ -79,7 +116,10 @@ pub fn answer(request: &Value) -> (Value, bool) {
 /// whether every request succeeded (the process exit status).
 pub fn answer_text(text: &str) -> (Value, bool) {
     match serde_json::from_str::<Value>(text) {
-        Err(e) => (json!({ "error": format!("Invalid input: the request is not valid JSON ({e})") }), false),
+        Err(e) => (
+            json!({ "error": format!("Invalid input: the request is not valid JSON ({e})") }),
+            false,
+        ),
         Ok(Value::Array(requests)) => {
             let mut ok = true;
             let answers = requests
@@ -110,7 +150,11 @@ mod tests {
     fn measure_answers_the_core_result() {
         let (value, ok) = answer_text(&json!({"op": "measure", "path": square(10.0)}).to_string());
         assert!(ok, "wanted success, got {value}");
-        assert_eq!(value["perimeter"].as_f64(), Some(40.0), "wanted perimeter 40, got {value}");
+        assert_eq!(
+            value["perimeter"].as_f64(),
+            Some(40.0),
+            "wanted perimeter 40, got {value}"
+        );
     }
 
     #[test]
@@ -121,10 +165,20 @@ mod tests {
         ])
         .to_string();
         let (value, ok) = answer_text(&text);
-        assert!(!ok, "wanted failure because the second path is open, got {value}");
-        assert_eq!(value[0]["perimeter"].as_f64(), Some(4.0), "wanted 4 first, got {value}");
+        assert!(
+            !ok,
+            "wanted failure because the second path is open, got {value}"
+        );
+        assert_eq!(
+            value[0]["perimeter"].as_f64(),
+            Some(4.0),
+            "wanted 4 first, got {value}"
+        );
         let message = value[1]["error"].as_str().unwrap_or_default();
-        assert!(message.contains("open"), "wanted the open-path message second, got {value}");
+        assert!(
+            message.contains("open"),
+            "wanted the open-path message second, got {value}"
+        );
     }
 
     #[test]
@@ -138,7 +192,10 @@ mod tests {
         ] {
             let (value, ok) = answer_text(text);
             let message = value["error"].as_str().unwrap_or_default();
-            assert!(!ok && message.contains(wanted), "for {text}: wanted an error containing {wanted:?}, got {value}");
+            assert!(
+                !ok && message.contains(wanted),
+                "for {text}: wanted an error containing {wanted:?}, got {value}"
+            );
         }
     }
 }

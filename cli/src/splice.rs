@@ -7,7 +7,10 @@ use std::ops::Range;
 
 /// Escapes text for an XML attribute value or text node.
 pub fn escape(text: &str) -> String {
-    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 /// A set of non-overlapping replacements on one source text.
@@ -28,7 +31,10 @@ impl Edits {
         let mut at = 0;
         for (range, text) in &self.list {
             if range.start < at {
-                return Err(format!("internal error: overlapping edits at byte {}", range.start));
+                return Err(format!(
+                    "internal error: overlapping edits at byte {}",
+                    range.start
+                ));
             }
             out.push_str(&source[at..range.start]);
             out.push_str(text);
@@ -42,7 +48,10 @@ impl Edits {
 /// The element's qualified tag prefix as written (`"svg:"` for `<svg:rect>`, else `""`).
 pub fn tag_prefix(source: &str, node: Node) -> String {
     let start = node.range().start + 1;
-    let name: String = source[start..].chars().take_while(|c| !c.is_whitespace() && *c != '/' && *c != '>').collect();
+    let name: String = source[start..]
+        .chars()
+        .take_while(|c| !c.is_whitespace() && *c != '/' && *c != '>')
+        .collect();
     match name.split_once(':') {
         Some((p, _)) => format!("{p}:"),
         None => String::new(),
@@ -103,7 +112,11 @@ mod tests {
         assert_eq!(tag_prefix(src, rect), "svg:");
         assert_eq!(&src[end_tag_start(src, root).unwrap()..], "</svg:svg>");
         let (decl, prefix) = namespaces(root);
-        assert!(decl.contains("xmlns=\"http://www.w3.org/2000/svg\"") && decl.contains("xmlns:inkscape"), "got {decl}");
+        assert!(
+            decl.contains("xmlns=\"http://www.w3.org/2000/svg\"")
+                && decl.contains("xmlns:inkscape"),
+            "got {decl}"
+        );
         assert_eq!(prefix, "inkscape");
     }
 }

@@ -18,8 +18,27 @@ pub const INKSCAPE_NS: &str = "http://www.inkscape.org/namespaces/inkscape";
 pub const OWN_PREFIX: &str = "dformer-";
 
 /// Elements whose content is never drawn directly.
-const NOT_DRAWN: &[&str] = &["defs", "clipPath", "mask", "marker", "pattern", "symbol", "metadata", "title", "desc", "style", "script", "foreignObject", "use", "svg", "image", "text"];
-const SHAPES: &[&str] = &["path", "rect", "circle", "ellipse", "polygon", "polyline", "line"];
+const NOT_DRAWN: &[&str] = &[
+    "defs",
+    "clipPath",
+    "mask",
+    "marker",
+    "pattern",
+    "symbol",
+    "metadata",
+    "title",
+    "desc",
+    "style",
+    "script",
+    "foreignObject",
+    "use",
+    "svg",
+    "image",
+    "text",
+];
+const SHAPES: &[&str] = &[
+    "path", "rect", "circle", "ellipse", "polygon", "polyline", "line",
+];
 
 /// One shape that may be a piece.
 #[derive(Debug, Clone)]
@@ -44,7 +63,8 @@ pub struct SvgFile<'input> {
 fn number(n: Node, name: &str, what: &str) -> Result<f64, String> {
     match n.attribute(name) {
         None => Ok(0.0),
-        Some(v) => length_px(v).ok_or_else(|| format!("{what}: attribute {name}=\"{v}\" is not an absolute length")),
+        Some(v) => length_px(v)
+            .ok_or_else(|| format!("{what}: attribute {name}=\"{v}\" is not an absolute length")),
     }
 }
 
@@ -52,7 +72,9 @@ fn transform_of(n: Node) -> Result<Affine, String> {
     match n.attribute("transform") {
         None => Ok(Affine::IDENTITY),
         Some(t) => {
-            let m: svgtypes::Transform = t.parse().map_err(|e| format!("transform=\"{t}\" cannot be read ({e})"))?;
+            let m: svgtypes::Transform = t
+                .parse()
+                .map_err(|e| format!("transform=\"{t}\" cannot be read ({e})"))?;
             Ok(Affine::new([m.a, m.b, m.c, m.d, m.e, m.f]))
         }
     }
@@ -69,7 +91,10 @@ fn shape_path(n: Node, what: &str) -> Result<String, String> {
             if w <= 0.0 || h <= 0.0 {
                 return Err(format!("{what} has zero or negative width or height"));
             }
-            let (rx0, ry0) = (n.attribute("rx").map(|_| g("rx")).transpose()?, n.attribute("ry").map(|_| g("ry")).transpose()?);
+            let (rx0, ry0) = (
+                n.attribute("rx").map(|_| g("rx")).transpose()?,
+                n.attribute("ry").map(|_| g("ry")).transpose()?,
+            );
             // A missing radius takes the other's value; both are clamped to half the side (§9.2).
             let rx = rx0.or(ry0).unwrap_or(0.0).clamp(0.0, w / 2.0);
             let ry = ry0.or(rx0).unwrap_or(0.0).clamp(0.0, h / 2.0);
@@ -85,7 +110,11 @@ fn shape_path(n: Node, what: &str) -> Result<String, String> {
         }
         "circle" | "ellipse" => {
             let (cx, cy) = (g("cx")?, g("cy")?);
-            let (rx, ry) = if n.tag_name().name() == "circle" { (g("r")?, g("r")?) } else { (g("rx")?, g("ry")?) };
+            let (rx, ry) = if n.tag_name().name() == "circle" {
+                (g("r")?, g("r")?)
+            } else {
+                (g("rx")?, g("ry")?)
+            };
             if rx <= 0.0 || ry <= 0.0 {
                 return Err(format!("{what} has a zero or negative radius"));
             }
@@ -96,7 +125,9 @@ fn shape_path(n: Node, what: &str) -> Result<String, String> {
             );
         }
         "polygon" | "polyline" => {
-            for (i, (x, y)) in svgtypes::PointsParser::from(n.attribute("points").unwrap_or("")).enumerate() {
+            for (i, (x, y)) in
+                svgtypes::PointsParser::from(n.attribute("points").unwrap_or("")).enumerate()
+            {
                 let _ = write!(d, "{} {x} {y} ", if i == 0 { "M" } else { "L" });
             }
             if n.tag_name().name() == "polygon" && !d.is_empty() {
@@ -114,8 +145,12 @@ fn shape_path(n: Node, what: &str) -> Result<String, String> {
 impl<'input> SvgFile<'input> {
     /// Parses the text; the root must be an SVG `<svg>` element.
     pub fn parse(text: &'input str, unit: Option<&str>) -> Result<Self, String> {
-        let options = roxmltree::ParsingOptions { allow_dtd: true, ..Default::default() };
-        let doc = Document::parse_with_options(text, options).map_err(|e| format!("not a readable SVG/XML file: {e}"))?;
+        let options = roxmltree::ParsingOptions {
+            allow_dtd: true,
+            ..Default::default()
+        };
+        let doc = Document::parse_with_options(text, options)
+            .map_err(|e| format!("not a readable SVG/XML file: {e}"))?;
         let root = doc.root_element();
         if root.tag_name().name() != "svg" || root.tag_name().namespace() != Some(SVG_NS) {
             return Err("the root element is not an SVG <svg> element (xmlns=\"http://www.w3.org/2000/svg\")".into());
@@ -124,7 +159,12 @@ impl<'input> SvgFile<'input> {
             .children()
             .find(|c| c.tag_name().name() == "namedview")
             .and_then(|nv| nv.attribute((INKSCAPE_NS, "document-units")));
-        let scale = Scale::new(root.attribute("width"), root.attribute("viewBox"), doc_units, unit)?;
+        let scale = Scale::new(
+            root.attribute("width"),
+            root.attribute("viewBox"),
+            doc_units,
+            unit,
+        )?;
         Ok(SvgFile { doc, scale })
     }
 
@@ -138,10 +178,22 @@ impl<'input> SvgFile<'input> {
     }
 }
 
-fn walk<'a, 'input>(node: Node<'a, 'input>, ctm: Affine, out: &mut Vec<Shape<'a, 'input>>, counter: &mut usize) -> Result<(), String> {
-    for child in node.children().filter(|c| c.is_element() && c.tag_name().namespace() == Some(SVG_NS)) {
+fn walk<'a, 'input>(
+    node: Node<'a, 'input>,
+    ctm: Affine,
+    out: &mut Vec<Shape<'a, 'input>>,
+    counter: &mut usize,
+) -> Result<(), String> {
+    for child in node
+        .children()
+        .filter(|c| c.is_element() && c.tag_name().namespace() == Some(SVG_NS))
+    {
         let tag = child.tag_name().name();
-        if NOT_DRAWN.contains(&tag) || child.attribute("id").is_some_and(|id| id.starts_with(OWN_PREFIX)) {
+        if NOT_DRAWN.contains(&tag)
+            || child
+                .attribute("id")
+                .is_some_and(|id| id.starts_with(OWN_PREFIX))
+        {
             continue;
         }
         let what = match child.attribute("id") {
@@ -151,8 +203,17 @@ fn walk<'a, 'input>(node: Node<'a, 'input>, ctm: Affine, out: &mut Vec<Shape<'a,
         let local = ctm * transform_of(child).map_err(|e| format!("{what}: {e}"))?;
         if SHAPES.contains(&tag) {
             *counter += 1;
-            let key = child.attribute("id").map(str::to_string).unwrap_or_else(|| format!("shape{}", *counter));
-            out.push(Shape { node: child, d: shape_path(child, &what)?, name: what, key, ctm: local });
+            let key = child
+                .attribute("id")
+                .map(str::to_string)
+                .unwrap_or_else(|| format!("shape{}", *counter));
+            out.push(Shape {
+                node: child,
+                d: shape_path(child, &what)?,
+                name: what,
+                key,
+                ctm: local,
+            });
         } else {
             walk(child, local, out, counter)?;
         }
@@ -171,9 +232,18 @@ mod tests {
             <defs><rect id="hidden" width="1" height="1"/></defs></svg>"#;
         let file = SvgFile::parse(text, None).unwrap();
         let shapes = file.shapes().unwrap();
-        assert_eq!(shapes.len(), 1, "wanted only the drawn rect, got {:?}", shapes.iter().map(|s| &s.name).collect::<Vec<_>>());
+        assert_eq!(
+            shapes.len(),
+            1,
+            "wanted only the drawn rect, got {:?}",
+            shapes.iter().map(|s| &s.name).collect::<Vec<_>>()
+        );
         let p = shapes[0].ctm * kurbo::Point::new(1.0, 1.0);
-        assert_eq!((p.x, p.y), (12.0, 2.0), "wanted scale then translate: (12, 2), got {p:?}");
+        assert_eq!(
+            (p.x, p.y),
+            (12.0, 2.0),
+            "wanted scale then translate: (12, 2), got {p:?}"
+        );
         assert_eq!(file.scale.unit, "mm");
     }
 
@@ -188,7 +258,10 @@ mod tests {
 
     #[test]
     fn bad_files_and_shapes_are_named() {
-        assert!(SvgFile::parse("<html/>", None).err().unwrap_or_default().contains("not an SVG"));
+        assert!(SvgFile::parse("<html/>", None)
+            .err()
+            .unwrap_or_default()
+            .contains("not an SVG"));
         let text = r#"<svg xmlns="http://www.w3.org/2000/svg"><circle id="c" r="0"/></svg>"#;
         let err = SvgFile::parse(text, None).unwrap().shapes().unwrap_err();
         assert!(err.contains("#c") && err.contains("radius"), "got {err}");

@@ -7,12 +7,21 @@
 use svgtypes::{Length, LengthUnit, ViewBox};
 
 /// The units a user may name, with their size in CSS px.
-pub const UNITS: &[(&str, f64)] =
-    &[("mm", 96.0 / 25.4), ("cm", 96.0 / 2.54), ("in", 96.0), ("pt", 96.0 / 72.0), ("pc", 16.0), ("px", 1.0)];
+pub const UNITS: &[(&str, f64)] = &[
+    ("mm", 96.0 / 25.4),
+    ("cm", 96.0 / 2.54),
+    ("in", 96.0),
+    ("pt", 96.0 / 72.0),
+    ("pc", 16.0),
+    ("px", 1.0),
+];
 
 /// Size of a named unit in CSS px, or `None` for an unknown name.
 pub fn px_per(unit: &str) -> Option<f64> {
-    UNITS.iter().find(|(name, _)| *name == unit).map(|(_, px)| *px)
+    UNITS
+        .iter()
+        .find(|(name, _)| *name == unit)
+        .map(|(_, px)| *px)
 }
 
 fn unit_name(unit: LengthUnit) -> Option<&'static str> {
@@ -45,9 +54,18 @@ pub struct Scale {
 impl Scale {
     /// From the root's `width` and `viewBox`, and the display unit: `unit` if given, else
     /// Inkscape's `inkscape:document-units`, else the unit of `width`, else px.
-    pub fn new(width: Option<&str>, view_box: Option<&str>, doc_units: Option<&str>, unit: Option<&str>) -> Result<Scale, String> {
-        let width_px = width.and_then(length_px).filter(|w| *w > 0.0 && w.is_finite());
-        let vb = view_box.and_then(|v| v.parse::<ViewBox>().ok()).filter(|v| v.w > 0.0 && v.h > 0.0);
+    pub fn new(
+        width: Option<&str>,
+        view_box: Option<&str>,
+        doc_units: Option<&str>,
+        unit: Option<&str>,
+    ) -> Result<Scale, String> {
+        let width_px = width
+            .and_then(length_px)
+            .filter(|w| *w > 0.0 && w.is_finite());
+        let vb = view_box
+            .and_then(|v| v.parse::<ViewBox>().ok())
+            .filter(|v| v.w > 0.0 && v.h > 0.0);
         let px_per_user = match (width_px, vb) {
             (Some(w), Some(vb)) => w / vb.w,
             _ => 1.0,
@@ -56,7 +74,11 @@ impl Scale {
             .and_then(|w| w.trim().parse::<Length>().ok())
             .and_then(|l| unit_name(l.unit))
             .map(str::to_string);
-        let unit = unit.map(str::to_string).or(doc_units.map(str::to_string)).or(width_unit).unwrap_or_else(|| "px".into());
+        let unit = unit
+            .map(str::to_string)
+            .or(doc_units.map(str::to_string))
+            .or(width_unit)
+            .unwrap_or_else(|| "px".into());
         if px_per(&unit).is_none() {
             return Err(format!(
                 "unknown unit `{unit}`; use one of {}",
@@ -74,10 +96,15 @@ impl Scale {
     /// A length given by the user (`3mm`, `0.1in`, or a bare number in the display unit) →
     /// user units.
     pub fn parse_user(&self, text: &str) -> Result<f64, String> {
-        let len: Length = text.trim().parse().map_err(|_| format!("`{text}` is not a length (e.g. 3, 3mm, 0.1in)"))?;
+        let len: Length = text
+            .trim()
+            .parse()
+            .map_err(|_| format!("`{text}` is not a length (e.g. 3, 3mm, 0.1in)"))?;
         let unit = match len.unit {
             LengthUnit::None => self.unit.as_str(),
-            other => unit_name(other).ok_or_else(|| format!("`{text}`: use an absolute unit (mm, cm, in, pt, pc, px)"))?,
+            other => unit_name(other).ok_or_else(|| {
+                format!("`{text}`: use an absolute unit (mm, cm, in, pt, pc, px)")
+            })?,
         };
         Ok(len.number * px_per(unit).unwrap_or(1.0) / self.px_per_user)
     }
@@ -91,16 +118,33 @@ mod tests {
     fn a_mm_document_has_mm_user_units() {
         let s = Scale::new(Some("210mm"), Some("0 0 210 297"), None, None).unwrap();
         assert_eq!(s.unit, "mm");
-        assert!((s.to_unit(10.0) - 10.0).abs() < 1e-12, "wanted 10 mm, got {}", s.to_unit(10.0));
-        assert!((s.parse_user("1in").unwrap() - 25.4).abs() < 1e-12, "wanted 25.4 user units per inch");
-        assert!((s.parse_user("3").unwrap() - 3.0).abs() < 1e-12, "bare numbers are in the display unit");
+        assert!(
+            (s.to_unit(10.0) - 10.0).abs() < 1e-12,
+            "wanted 10 mm, got {}",
+            s.to_unit(10.0)
+        );
+        assert!(
+            (s.parse_user("1in").unwrap() - 25.4).abs() < 1e-12,
+            "wanted 25.4 user units per inch"
+        );
+        assert!(
+            (s.parse_user("3").unwrap() - 3.0).abs() < 1e-12,
+            "bare numbers are in the display unit"
+        );
     }
 
     #[test]
     fn a_document_without_viewbox_has_px_user_units() {
         let s = Scale::new(Some("800"), None, None, Some("mm")).unwrap();
-        assert!((s.to_unit(96.0) - 25.4).abs() < 1e-12, "wanted 96 px = 25.4 mm, got {}", s.to_unit(96.0));
-        assert!((s.parse_user("25.4").unwrap() - 96.0).abs() < 1e-12, "25.4 mm = 96 px");
+        assert!(
+            (s.to_unit(96.0) - 25.4).abs() < 1e-12,
+            "wanted 96 px = 25.4 mm, got {}",
+            s.to_unit(96.0)
+        );
+        assert!(
+            (s.parse_user("25.4").unwrap() - 96.0).abs() < 1e-12,
+            "25.4 mm = 96 px"
+        );
     }
 
     #[test]

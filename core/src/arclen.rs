@@ -59,10 +59,16 @@ pub fn segment_len(c: &CubicBez, accuracy: f64) -> f64 {
     if !poly.is_finite() {
         return at_origin(c).arclen(accuracy * poly);
     }
+    // Control polygon no longer than the chord: a straight segment traversed once (a corner-to-
+    // corner line, or handles along it in order), whose length is the chord, exactly.
+    let chord = norm(c.p3 - c.p0);
+    if poly <= chord {
+        return chord;
+    }
     let k = 1.0 / poly;
     let o = c.p0;
     let u = CubicBez::new(Point::ORIGIN, ((c.p1 - o) * k).to_point(), ((c.p2 - o) * k).to_point(), ((c.p3 - o) * k).to_point());
-    poly * arclen_unit(&u, accuracy, 0)
+    poly * arclen_unit(&u, accuracy, 0, Some(1.0))
 }
 
 /// Perimeter of a closed outline to relative `accuracy` (the sum of [`segment_len`]).
@@ -90,7 +96,9 @@ fn gl_core(coeffs: &[(f64, f64)], dm: Vec2, dm1: Vec2, dm2: Vec2) -> f64 {
 /// times the polygon-minus-chord length), the same rules and the same subdivision, hence the
 /// same accuracy semantics; only the speeds use `sqrt` (valid at the unit scale of
 /// [`segment_len`]) instead of `hypot`.
-fn arclen_unit(c: &CubicBez, accuracy: f64, depth: usize) -> f64 {
+///
+/// `poly`: the control-polygon length when already known (1 at the top level, by construction).
+fn arclen_unit(c: &CubicBez, accuracy: f64, depth: usize, poly: Option<f64>) -> f64 {
     use kurbo::common::{
         GAUSS_LEGENDRE_COEFFS_16_HALF, GAUSS_LEGENDRE_COEFFS_24_HALF, GAUSS_LEGENDRE_COEFFS_8,
         GAUSS_LEGENDRE_COEFFS_8_HALF,
@@ -100,7 +108,7 @@ fn arclen_unit(c: &CubicBez, accuracy: f64, depth: usize) -> f64 {
     let d12 = c.p2 - c.p1;
     let d23 = c.p3 - c.p2;
     let sq = |v: Vec2| (v.x * v.x + v.y * v.y).sqrt();
-    let lp_lc = sq(d01) + sq(d12) + sq(d23) - sq(d03);
+    let lp_lc = poly.unwrap_or_else(|| sq(d01) + sq(d12) + sq(d23)) - sq(d03);
     let dd1 = d12 - d01;
     let dd2 = d23 - d12;
     let dm = 0.25 * (d01 + d23) + 0.5 * d12;
@@ -124,7 +132,7 @@ fn arclen_unit(c: &CubicBez, accuracy: f64, depth: usize) -> f64 {
         return gl_core(GAUSS_LEGENDRE_COEFFS_24_HALF, dm, dm1, dm2);
     }
     let (c0, c1) = c.subdivide();
-    arclen_unit(&c0, accuracy * 0.5, depth + 1) + arclen_unit(&c1, accuracy * 0.5, depth + 1)
+    arclen_unit(&c0, accuracy * 0.5, depth + 1, None) + arclen_unit(&c1, accuracy * 0.5, depth + 1, None)
 }
 
 /// Cumulative arc lengths of a closed outline, and point/tangent lookup by arc length.

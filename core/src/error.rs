@@ -90,6 +90,9 @@ impl fmt::Display for Error {
                 (a - b).abs() / a.abs().max(b.abs())
             ),
             Error::Infeasible { reason } => write!(f, "{reason}"),
+            Error::SvgSyntax { position, near, problem } if near.is_empty() => {
+                write!(f, "Could not read the SVG path data at its end (character {}): {problem}.", position + 1)
+            }
             Error::SvgSyntax { position, near, problem } => write!(
                 f,
                 "Could not read the SVG path data at character {} (near \"{near}\"): {problem}.",

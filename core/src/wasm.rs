@@ -99,7 +99,11 @@ pub fn connect(pieces: JsValue, options: JsValue) -> Result<JsValue, JsError> {
     let pieces: Vec<api::path::PathDto> = from_js(pieces, "pieces")?;
     let options: api::connect::ConnectOptionsDto =
         if options.is_undefined() || options.is_null() { Default::default() } else { from_js(options, "options")? };
-    to_js(&api::connect::connect(&pieces, &options).map_err(js_error)?)
+    let result = api::connect::connect(&pieces, &options).map_err(js_error)?;
+    match api::connect::js::to_js(&result) {
+        Some(v) => Ok(v),
+        None => to_js(&result),
+    }
 }
 
 /// `normalize(paths, options)` → `{ paths, scales, perimeter }`.
@@ -131,4 +135,13 @@ pub fn path_to_svg(path: JsValue) -> Result<String, JsError> {
 #[wasm_bindgen(js_name = DEFAULT_ACCURACY)]
 pub fn default_accuracy() -> f64 {
     crate::arclen::DEFAULT_ACCURACY
+}
+
+/// `simulate(pieces, options)` → `{ vertices, triangles, piece, seam, stats }` (see `crate::simulate`).
+#[wasm_bindgen]
+pub fn simulate(pieces: JsValue, options: JsValue) -> Result<JsValue, JsError> {
+    let pieces: Vec<api::path::PathDto> = from_js(pieces, "pieces")?;
+    let options: api::simulate::SimulateOptionsDto =
+        if options.is_undefined() || options.is_null() { Default::default() } else { from_js(options, "options")? };
+    to_js(&api::simulate::simulate(&pieces, &options).map_err(js_error)?)
 }

@@ -5,6 +5,7 @@
 #   - the CLI's own Rust unit tests (cargo test -p dformer-cli);
 #   - test_golden.py      inkex ComparisonMixin golden files (EXPORT_COMPARE=2/3 to regenerate);
 #   - test_properties.py  equal perimeters, paired holes at pitch and inset, errors, .inx checks;
+#   - test_export3d.py    the OBJ/STL written by 3D export against the reported volume and area;
 #   - test_cli.py         the JSON bridge and batch SVG commands, cross-checked with the extension;
 #   - test_inkscape_e2e.py the real Inkscape 1.2 running the installed extension (under xvfb-run).
 # Needs: inkscape, python3-lxml, python3-numpy (Inkscape's own dependencies), xvfb + xauth.

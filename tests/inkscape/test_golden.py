@@ -56,7 +56,7 @@ class ConnectGoldenMm(ComparisonMixin, TestCase):
     compare_file = ["svg/connect_mm.svg"]  # a list: the file name goes into the golden's name
     comparisons = [
         ("--id=A", "--id=B", "--kind=stitch", "--count=12", "--slide=0.25"),
-        ("--id=A", "--id=B", "--kind=teeth", "--count=12", "--slide=0.5"),
+        ("--id=A", "--id=B", "--kind=teeth", "--count=16", "--slide=0.5", "--length=2"),
         ("--id=A", "--id=B", "--kind=leaves", "--count=8", "--slide=0.5"),
     ]
 

@@ -197,13 +197,13 @@ class ConnectProperties(unittest.TestCase):
         self.assertEqual(len(twice.xpath("//svg:g[@id='dformer-cut']")), 1, "one cut layer")
 
     def test_teeth_change_both_outlines_and_keep_them_closed(self):
-        svg, err, _ = run(Connect, "connect_mm.svg", "--id=A", "--id=B", "--kind=teeth", "--count=12", "--slide=0.5")
+        svg, err, _ = run(Connect, "connect_mm.svg", "--id=A", "--id=B", "--kind=teeth", "--count=16", "--slide=0.5", "--length=2")
         self.assertEqual(err, "", "these teeth fit: no warning expected")
         for eid in "AB":
             elem = svg.getElementById(eid)
             self.assertIsInstance(elem, inkex.PathElement)
             self.assertTrue(str(elem.path).strip().upper().endswith("Z"), f"#{eid} outline must stay closed")
-            self.assertGreater(len(elem.path), 4 * 12, f"#{eid} should carry the teeth")
+            self.assertGreater(len(elem.path), 4 * 16, f"#{eid} should carry the teeth")
 
 
 class Errors(unittest.TestCase):
@@ -277,7 +277,7 @@ class InxFiles(unittest.TestCase):
         checker = Check()
         self.addCleanup(os.chdir, os.getcwd())
         os.chdir(support.EXTENSION)  # inkex resolves the .inx's script relative to the cwd
-        for name in ("dformer_measure.inx", "dformer_normalize.inx", "dformer_connect.inx"):
+        for name in ("dformer_measure.inx", "dformer_normalize.inx", "dformer_connect.inx", "dformer_export3d.inx"):
             with self.subTest(inx=name):
                 path = os.path.join(support.EXTENSION, name)
                 checker.assertInxIsGood(path)

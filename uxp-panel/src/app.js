@@ -24,6 +24,10 @@
   var unit = 'mm';
   var pending = false;
   var applying = false;
+  var view = '2d';
+  var viewer = null;
+  var mesh = null; // last simulate() result and the pieces it was solved for (warm start)
+  var meshKey = '';
 
   /** Length fields: where each value (points) lives. */
   var LEN = {
@@ -105,6 +109,7 @@
     $('#angle').value = params.angle;
     $('#invert').checked = params.invert;
     $$('.start').forEach(function (row) {
+      var s = params.start[Number(row.dataset.piece)];
       $('.start-mode', row).value = s.mode;
       $('.start-anchor', row).value = s.anchor;
       $('.start-anchor', row).hidden = s.mode !== 'anchor';
@@ -185,6 +190,7 @@
       renderMeasure();
       renderResult();
       document.body.dataset.state = design.ok ? 'ready' : 'error';
+      if (view === '3d') solve3d();
     });
   }
 
@@ -270,7 +276,10 @@
     });
     $('#refresh-btn').addEventListener('click', function () { host.refresh(); });
     $('#apply-btn').addEventListener('click', apply);
-    window.addEventListener('resize', function () { recompute(); });
+    window.addEventListener('resize', function () {
+      recompute();
+      if (viewer) viewer.draw();
+    });
   }
 
   function bindBrowser() {
@@ -302,6 +311,96 @@
       e.preventDefault();
       if (e.dataTransfer && e.dataTransfer.files.length) host.openFiles(e.dataTransfer.files).catch(showError);
     });
+  }
+
+  // ---------------------------------------------------------------- 3D form
+  function volumeText(v) {
+    var perUnit = DF.units.PER_UNIT[unit];
+    var litres = (v * Math.pow(25.4 / 72, 3)) / 1e6;
+    var inUnits = v / Math.pow(perUnit, 3);
+    return 'Volume ' + inUnits.toLocaleString('en-US', { maximumFractionDigits: inUnits < 100 ? 3 : 0 }) + ' ' + unit + '³ (' +
+      litres.toLocaleString('en-US', { maximumFractionDigits: litres < 10 ? 3 : 2 }) + ' L)';
+  }
+  function areaText(a) {
+    var inUnits = a / Math.pow(DF.units.PER_UNIT[unit], 2);
+    return 'area ' + inUnits.toLocaleString('en-US', { maximumFractionDigits: inUnits < 100 ? 3 : 0 }) + ' ' + unit + '²';
+  }
+  function set3dMessage(text, ok) {
+    var el = $('#stats3d');
+    el.textContent = text;
+    el.className = 'stats' + (ok ? '' : ' error-text');
+    $('#export-obj').disabled = $('#export-stl').disabled = !ok;
+    document.body.dataset.solve = ok ? 'ok' : 'error';
+  }
+  /** Solves the 3D form for the current design; warm-started from the last solution of the same pieces. */
+  function solve3d() {
+    if (!viewer) viewer = DF.view3d.create($('#view3d'));
+    if (!DF.core.has('simulate')) {
+      viewer.setMesh(null);
+      return set3dMessage('This build of the geometry core has no simulate(): rebuild it to see the 3D form.', false);
+    }
+    if (!design || !design.ok) {
+      viewer.setMesh(null);
+      return set3dMessage(design && design.error ? design.error : 'Select two closed paths.', false);
+    }
+    var pieces = design.pieces.map(function (p) { return p.path; });
+    var key = JSON.stringify(pieces);
+    var options = { offset: design.offset };
+    if (mesh && meshKey === key) options.warm = mesh.vertices;
+    $('#offset3d').value = String(Math.round((design.offset / design.perimeter) * 1000));
+    $('#offset3d-out').textContent = fmt(design.offset);
+    try {
+      mesh = DF.core.simulate(pieces, options);
+      meshKey = key;
+    } catch (e) {
+      mesh = null;
+      viewer.setMesh(null);
+      return set3dMessage(e.message, false);
+    }
+    viewer.setMesh(mesh);
+    var st = mesh.stats;
+    set3dMessage(volumeText(st.volume) + ' · ' + areaText(st.area) + ' · strain ' + (st.maxStrain * 100).toFixed(2) + ' %' +
+      (st.converged ? '' : ' · not converged'), true);
+  }
+  function showView(which) {
+    view = which;
+    $$('.tabs button').forEach(function (b) {
+      var on = b.dataset.view === which;
+      b.classList.toggle('selected', on);
+      b.setAttribute('aria-selected', on ? 'true' : 'false');
+    });
+    $('#preview').style.display = which === '2d' ? '' : 'none';
+    $('#pane-3d').hidden = which !== '3d';
+    if (which === '3d') solve3d();
+  }
+  function bind3d() {
+    $$('.tabs button').forEach(function (b) {
+      b.addEventListener('click', function () { showView(b.dataset.view); });
+    });
+    $('#offset3d').addEventListener('input', function (e) {
+      if (!design || !design.ok) return;
+      var P = design.perimeter;
+      var o = (Number(e.target.value) / 1000) * P;
+      // B's start = its anchor-based start + offset; choose the offset so that sB − sA ≡ o.
+      var off = (o + design.starts[0].arc - design.starts[1].base) % P;
+      params.start[1].offset = off < 0 ? off + P : off;
+      save();
+      showUnits();
+      recompute();
+    });
+    $('#export-obj').addEventListener('click', function () {
+      if (mesh) host.saveText('d-form.obj', DF.view3d.toObj(mesh, 1 / DF.units.PER_UNIT[unit], unit), 'model/obj').then(report3d, showError);
+    });
+    $('#export-stl').addEventListener('click', function () {
+      if (mesh) host.saveText('d-form.stl', DF.view3d.toStl(mesh, 1 / DF.units.PER_UNIT[unit]), 'model/stl').then(report3d, showError);
+    });
+  }
+  function report3d(r) {
+    if (r && r.message) {
+      var msg = $('#message');
+      msg.className = 'message success';
+      msg.textContent = r.message;
+    }
   }
 
   function showError(e) {
@@ -351,6 +450,7 @@
     document.body.dataset.host = host.kind;
     applyTheme(host.theme());
     bind();
+    bind3d();
     if (host.kind === 'browser') bindBrowser();
     syncControls();
     DF.core.load().then(function () {
@@ -363,7 +463,7 @@
     });
   }
 
-  DF.app = { start: start, params: function () { return params; }, design: function () { return design; } };
+  DF.app = { start: start, params: function () { return params; }, design: function () { return design; }, mesh: function () { return mesh; } };
   if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start);
   else start();
 })(window.DF = window.DF || {});

@@ -1,14 +1,15 @@
 /* D-former panel: the WASM geometry core, loaded as a classic script.
- * `wasm/dformer.js` is wasm-bindgen's `--target no-modules` glue (defines the global `wasm_bindgen`);
+ * `wasm/dformer.js` is wasm-bindgen's glue bundled by build.mjs into one classic script (global
+ * `dformerWasm`: `default` is the initialiser, the rest the core's functions);
  * the bytes come from `wasm/dformer-wasm-inline.js` (base64, written by build.mjs) so the panel needs
  * neither fetch() of a file:// URL (refused by CEP's Chromium) nor Node.js. Served over http without
  * the inline file, the .wasm is fetched instead. */
 (function (DF) {
   'use strict';
   var api = null;
-  /** The glue declares `let wasm_bindgen` at script top level: a global binding, not a window property. */
   function glue() {
-    return typeof wasm_bindgen === 'function' ? wasm_bindgen : null;
+    var ns = window.dformerWasm;
+    return ns && typeof ns.default === 'function' ? ns : null;
   }
 
   function base64Bytes(b64) {
@@ -21,13 +22,13 @@
   /** Loads the module once; resolves to the core's exported functions. */
   function load() {
     if (api) return Promise.resolve(api);
-    var init = glue();
-    if (!init) {
+    var ns = glue();
+    if (!ns) {
       return Promise.reject(new Error('The geometry core (wasm/dformer.js) is missing: run `node uxp-panel/build.mjs`.'));
     }
     var source = window.DFORMER_WASM_BASE64 ? base64Bytes(window.DFORMER_WASM_BASE64) : 'wasm/dformer_bg.wasm';
-    return init({ module_or_path: source }).then(function () {
-      api = init;
+    return ns.default({ module_or_path: source }).then(function () {
+      api = ns;
       return api;
     });
   }

@@ -42,9 +42,9 @@
     }
     var along = DF.core.lengthToAnchor(path, k);
     var walkCcw = index === 0;
-    var s = (orientation === 'ccw') === walkCcw ? along : along === 0 ? 0 : perimeter - along;
-    s = (s + (spec.offset || 0)) % perimeter;
-    return { anchor: k, arc: s < 0 ? s + perimeter : s };
+    var base = (orientation === 'ccw') === walkCcw ? along : along === 0 ? 0 : perimeter - along;
+    var s = (base + (spec.offset || 0)) % perimeter;
+    return { anchor: k, base: base, arc: s < 0 ? s + perimeter : s };
   }
 
   function connectOptions(params, start) {
@@ -95,6 +95,10 @@
         return startArc(p, paths[i], perims[i], params.start[i], i, out.measures[i].m.orientation);
       });
       var result = DF.core.connect(paths, connectOptions(params, [starts[0].arc, starts[1].arc]));
+      out.starts = starts;
+      // simulate() pairs A(t) with B(offset + t): the seam offset matching these connectors.
+      var off = (starts[1].arc - starts[0].arc) % out.perimeter;
+      out.offset = off < 0 ? off + out.perimeter : off;
       out.count = result.count;
       out.pitch = result.pitch;
       out.warnings = result.warnings || [];

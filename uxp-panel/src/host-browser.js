@@ -43,8 +43,11 @@
       files.forEach(function (file) {
         var parsed = DF.svgImport.parse(file.text, file.name);
         unit = unit || parsed.unit;
+        var base = file.name.replace(/\.svg$/i, '');
         parsed.shapes.forEach(function (s) {
-          shapes.push({ name: files.length > 1 ? file.name.replace(/\.svg$/i, '') + ': ' + s.name : s.name, path: s.path });
+          // One shape per file: the file's name says it; several: the shape's own id.
+          var name = parsed.shapes.length === 1 && files.length > 1 ? base : s.name;
+          shapes.push({ name: name, path: s.path });
         });
       });
       var used = shapes.slice(0, 2);
@@ -73,8 +76,8 @@
       var dark = !!(media && media.matches);
       return { background: dark ? [50, 50, 50] : [240, 240, 240], dark: dark };
     }
-    function download(name, text) {
-      var blob = new Blob([text], { type: 'image/svg+xml' });
+    function download(name, text, type) {
+      var blob = new Blob([text], { type: type || 'image/svg+xml' });
       var url = URL.createObjectURL(blob);
       var a = win.document.createElement('a');
       a.href = url;
@@ -120,6 +123,11 @@
         state.document = 'Sample: ' + set.name;
         emit();
         return Promise.resolve();
+      },
+      /** Saves a text file (3D exports): a download. */
+      saveText: function (name, text, type) {
+        download(name, text, type);
+        return Promise.resolve({ ok: true, message: 'Downloaded ' + name + '.' });
       },
       /** Writes the normalized outlines back into the loaded shapes and downloads the laser SVG. */
       apply: function (plan) {

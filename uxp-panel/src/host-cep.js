@@ -9,6 +9,7 @@
  *   refresh()                re-reads the selection now
  *   apply(plan)              Promise<{ ok, error?, message }>; plan = { document, updates, pieces, layers, labelSize }
  *   theme()                  { background: [r,g,b], dark: bool }
+ *   saveText(name, text, type)  Promise<{ ok, message }>: save an export (OBJ, STL)
  * Selection = { ok, error?, document, units, pieces: [{ id, name, path, selectedAnchors, allSelected }], skipped } */
 (function (DF) {
   'use strict';
@@ -115,6 +116,18 @@
         return poll();
       },
       theme: theme,
+      /** Saves a text file (3D exports) through CEP's native file API (window.cep.fs, no Node.js needed). */
+      saveText: function (name, text) {
+        var fs = window.cep && window.cep.fs;
+        if (!fs) return Promise.reject(new Error('This CEP version offers no file dialog (window.cep.fs).'));
+        var ext = name.split('.').pop();
+        var chosen = fs.showSaveDialogEx('Export ' + ext.toUpperCase(), '', [ext], name);
+        if (chosen.err || !chosen.data) return Promise.resolve({ ok: false });
+        var path = /\.[a-z]+$/i.test(chosen.data) ? chosen.data : chosen.data + '.' + ext;
+        var written = fs.writeFile(path, text);
+        if (written.err) return Promise.reject(new Error('Could not write ' + path + ' (CEP error ' + written.err + ').'));
+        return Promise.resolve({ ok: true, message: 'Saved ' + path + '.' });
+      },
       apply: function (plan) {
         var payload = {
           document: plan.document,

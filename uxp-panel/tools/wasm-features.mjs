@@ -32,7 +32,7 @@ export const CEP_RELEASES = [
   { cep: 12, chromium: 99, illustrator: null }, // Adobe lists Illustrator as "TBD" for CEP 12
 ];
 
-class Reader {
+export class Reader {
   constructor(bytes, pos = 0, end = bytes.length) {
     this.b = bytes;
     this.p = pos;
@@ -255,7 +255,7 @@ function functionBody(s, use) {
 }
 
 /** Decodes one instruction's immediates and records the feature it needs. */
-function instruction(op, s, use) {
+export function instruction(op, s, use) {
   if (op === 0x02 || op === 0x03 || op === 0x04) {
     const bt = s.sleb();
     if (bt >= 0) use('multi-value'); // block type given by a type index

@@ -1,6 +1,9 @@
 //! `connect(pieces, options)` of the contract: DTOs and their conversions.
 //! The geometry and every option's meaning and default are in [`crate::connect`].
 
+#[cfg(target_arch = "wasm32")]
+pub mod js;
+
 use super::path::{arr, PathDto};
 use crate::connect::{self, options::RawOptions, Connection, Hole, Label, PieceOut};
 use crate::error::{Error, Result};

@@ -9,6 +9,9 @@ pub mod simulate;
 pub mod svg;
 pub mod value;
 
+pub use normalize::normalize;
+pub use svg::{path_from_svg, path_to_svg};
+
 use crate::arclen::{DEFAULT_ACCURACY, MAX_ACCURACY, MIN_ACCURACY};
 use crate::error::{Error, Result};
 use crate::measure::{self, Orientation};

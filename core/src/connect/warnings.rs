@@ -17,27 +17,87 @@ pub fn list(items: &[String]) -> String {
     }
 }
 
-/// The cut outline as cubic segments with their tight bounding boxes, for distance and
-/// inside/outside queries.
+/// The cut outline as cubic segments with their tight bounding boxes, bucketed in a uniform
+/// grid (for distance queries) and in horizontal bands (for the inside test), so a query looks
+/// at the few segments near the point instead of all of them.
 pub struct Edge {
     segs: Vec<CubicBez>,
     boxes: Vec<Rect>,
+    origin: Point,
+    cell: f64,
+    cols: usize,
+    rows: usize,
+    /// `grid[row * cols + col]`: segments whose box overlaps the cell.
+    grid: Vec<Vec<u32>>,
+    /// `bands[row]`: segments whose box overlaps the row's y-range.
+    bands: Vec<Vec<u32>>,
+}
+
+/// `a.max(b)` for ordered (non-NaN) inputs, without the NaN handling of `f64::max` (which WASM
+/// turns into a library call).
+#[inline]
+fn mx(a: f64, b: f64) -> f64 {
+    if a > b { a } else { b }
 }
 
 impl Edge {
     pub fn new(segs: Vec<CubicBez>) -> Self {
-        let boxes = segs.iter().map(ParamCurveExtrema::bounding_box).collect();
-        Edge { segs, boxes }
+        let boxes: Vec<Rect> = segs.iter().map(ParamCurveExtrema::bounding_box).collect();
+        let all = boxes.iter().fold(Rect::new(f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY), |u, b| u.union(*b));
+        // About four cells per segment over the outline's box.
+        let (w, h) = (mx(all.width(), 0.0), mx(all.height(), 0.0));
+        let n = segs.len().max(1) as f64;
+        let mut cell = ((w * h) / (4.0 * n)).sqrt();
+        if !(cell > 0.0 && cell.is_finite()) {
+            cell = mx(mx(w, h), 1.0) / n;
+        }
+        let cols = ((w / cell).floor() as usize + 1).min(4096);
+        let rows = ((h / cell).floor() as usize + 1).min(4096);
+        let cell = mx(cell, mx(w / cols as f64, h / rows as f64) * (1.0 + 1e-12));
+        let mut grid = vec![Vec::new(); cols * rows];
+        let mut bands = vec![Vec::new(); rows];
+        let origin = Point::new(all.x0, all.y0);
+        let clamp = |v: f64, n: usize| (mx(v, 0.0) as usize).min(n - 1);
+        for (i, b) in boxes.iter().enumerate() {
+            let (c0, c1) = (clamp((b.x0 - origin.x) / cell, cols), clamp((b.x1 - origin.x) / cell, cols));
+            let (r0, r1) = (clamp((b.y0 - origin.y) / cell, rows), clamp((b.y1 - origin.y) / cell, rows));
+            for r in r0..=r1 {
+                bands[r].push(i as u32);
+                for c in c0..=c1 {
+                    grid[r * cols + c].push(i as u32);
+                }
+            }
+        }
+        Edge { segs, boxes, origin, cell, cols, rows, grid, bands }
+    }
+
+    fn cell_range(&self, lo: f64, hi: f64, o: f64, n: usize) -> Option<(usize, usize)> {
+        let (a, b) = ((lo - o) / self.cell, (hi - o) / self.cell);
+        if b < 0.0 || a >= n as f64 {
+            return None;
+        }
+        Some(((mx(a, 0.0)) as usize, (b as usize).min(n - 1)))
     }
 
     /// Distance from `p` to the outline if it is below `limit`, else `None`. Only segments
     /// whose bounding box comes within `limit` are measured exactly (kurbo's `nearest`
     /// minimises |B(t) − p|² through the roots of its degree-5 derivative).
     pub fn distance_below(&self, p: Point, limit: f64) -> Option<f64> {
+        let cols = self.cell_range(p.x - limit, p.x + limit, self.origin.x, self.cols)?;
+        let rows = self.cell_range(p.y - limit, p.y + limit, self.origin.y, self.rows)?;
+        let mut seen: Vec<u32> = Vec::new();
+        for r in rows.0..=rows.1 {
+            for c in cols.0..=cols.1 {
+                seen.extend_from_slice(&self.grid[r * self.cols + c]);
+            }
+        }
+        seen.sort_unstable();
+        seen.dedup();
         let mut best: Option<f64> = None;
-        for (c, b) in self.segs.iter().zip(&self.boxes) {
-            let dx = (b.x0 - p.x).max(p.x - b.x1).max(0.0);
-            let dy = (b.y0 - p.y).max(p.y - b.y1).max(0.0);
+        for i in seen {
+            let (c, b) = (&self.segs[i as usize], &self.boxes[i as usize]);
+            let dx = mx(mx(b.x0 - p.x, p.x - b.x1), 0.0);
+            let dy = mx(mx(b.y0 - p.y, p.y - b.y1), 0.0);
             if dx * dx + dy * dy >= limit * limit {
                 continue;
             }
@@ -50,11 +110,18 @@ impl Edge {
     }
 
     /// Whether `p` is enclosed (non-zero winding). Only segments whose box reaches the
-    /// horizontal ray to the left of `p` can contribute, so only those are handed to kurbo's
-    /// winding count.
+    /// horizontal ray to the left of `p` can contribute, so only those (from `p`'s band) are
+    /// handed to kurbo's winding count.
     pub fn contains(&self, p: Point) -> bool {
+        let Some((r, _)) = self.cell_range(p.y, p.y, self.origin.y, self.rows) else {
+            return false;
+        };
+        if p.y > self.origin.y + self.cell * self.rows as f64 {
+            return false;
+        }
         let mut path = BezPath::new();
-        for (c, b) in self.segs.iter().zip(&self.boxes) {
+        for &i in &self.bands[r] {
+            let (c, b) = (&self.segs[i as usize], &self.boxes[i as usize]);
             if b.y0 <= p.y && p.y <= b.y1 && b.x0 <= p.x {
                 path.move_to(c.p0);
                 path.curve_to(c.p1, c.p2, c.p3);

@@ -29,6 +29,46 @@ impl Triangulation {
         (a as u64) * (self.n as u64) + b as u64
     }
 
+    /// Number of polygon vertices.
+    pub fn len(&self) -> usize {
+        self.n
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    /// The triangulation of the polygon with twice the samples (coarse vertex m = fine vertex
+    /// 2m): every coarse triangle kept, plus the ear (2m, 2m+1, 2m+2) at each seam edge. `None`
+    /// when an ear is not a proper counter-clockwise triangle of `fine` (a concave stretch where
+    /// the new sample falls inside), or when an ear would hold another sample.
+    pub fn doubled(&self, fine: &[[f64; 2]]) -> Option<Triangulation> {
+        let nf = 2 * self.n;
+        if fine.len() != nf {
+            return None;
+        }
+        let eps = AREA_EPS * size2(fine);
+        let mut tris: Vec<[usize; 3]> = self.tris.iter().map(|t| t.map(|v| 2 * v)).collect();
+        for m in 0..self.n {
+            let (a, b, c) = (2 * m, 2 * m + 1, (2 * m + 2) % nf);
+            if orient(fine[a], fine[b], fine[c]) <= eps {
+                return None;
+            }
+            tris.push([a, b, c]);
+        }
+        // The coarse triangles must not swallow a new sample either.
+        for t in &self.tris {
+            let [a, b, c] = t.map(|v| fine[2 * v]);
+            for m in 0..self.n {
+                let p = fine[2 * m + 1];
+                if orient(a, b, p) > eps && orient(b, c, p) > eps && orient(c, a, p) > eps {
+                    return None;
+                }
+            }
+        }
+        Some(Triangulation::from_tris(nf, tris))
+    }
+
     fn from_tris(n: usize, tris: Vec<[usize; 3]>) -> Self {
         let mut t = Triangulation { tris, n, edge: HashMap::new() };
         t.edge.reserve(3 * t.tris.len());

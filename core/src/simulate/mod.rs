@@ -87,11 +87,10 @@ pub struct Simulation {
 }
 
 /// Glues `a` and `b` (closed, equal perimeters) and finds the 3D D-form.
-/// `a_index`/`b_index` only number the pieces in error messages.
 pub fn simulate(a: &Contour, b: &Contour, options: &SimulateOptions) -> Result<Simulation> {
     let timer = clock::Timer::start();
-    let pieces = seam::SeamPieces::sample(a, b, options)?;
-    let solution = solver::solve(&pieces, options)?;
+    let glue = seam::Glue::new(a, b, options.offset)?;
+    let (pieces, solution) = solver::solve(&glue, options)?;
     let mut sim = stats::finish(&pieces, solution);
     sim.stats.ms = timer.elapsed_ms();
     Ok(sim)

@@ -10,7 +10,7 @@ pub const MIN_RESOLUTION: usize = 8;
 /// Most seam vertices (beyond this the solve stops being interactive).
 pub const MAX_RESOLUTION: usize = 4096;
 /// Default cap on Levenberg–Marquardt steps.
-pub const DEFAULT_MAX_ITERATIONS: usize = 200;
+pub const DEFAULT_MAX_ITERATIONS: usize = 1000;
 
 /// Checked options. `warm` holds a previous result's vertices (seam order), if any.
 #[derive(Debug, Clone, PartialEq)]

@@ -4,7 +4,6 @@
 //! so that both sample polygons run counter-clockwise: vertex k of A and vertex k of B are the
 //! same seam vertex.
 
-use super::options::SimulateOptions;
 use crate::arclen::ArcTable;
 use crate::contour::Contour;
 use crate::error::{Error, Result};
@@ -36,9 +35,18 @@ pub struct SeamPieces {
     pub flat: [FlatPiece; 2],
 }
 
-impl SeamPieces {
-    /// Checks both outlines and their perimeters, then samples them.
-    pub fn sample(a: &Contour, b: &Contour, options: &SimulateOptions) -> Result<Self> {
+/// The two outlines oriented for gluing, measured once and sampled at any resolution.
+#[derive(Debug, Clone)]
+pub struct Glue {
+    ta: ArcTable,
+    tb: ArcTable,
+    area: [f64; 2],
+    offset: f64,
+}
+
+impl Glue {
+    /// Checks both outlines and their perimeters (the 1e-6 rule of `connect`).
+    pub fn new(a: &Contour, b: &Contour, offset: f64) -> Result<Self> {
         validate::check_outline(a, 0)?;
         validate::check_outline(b, 1)?;
         for (i, c) in [a, b].into_iter().enumerate() {
@@ -61,7 +69,15 @@ impl SeamPieces {
         if (pa - pb).abs() > PERIMETER_TOLERANCE * pa.max(pb) {
             return Err(Error::PerimeterMismatch { a: pa, b: pb });
         }
-        let n = options.resolution;
+        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], offset })
+    }
+
+    pub fn perimeter(&self) -> f64 {
+        self.ta.total()
+    }
+
+    /// Both pieces sampled at `n` seam vertices.
+    pub fn sample(&self, n: usize) -> SeamPieces {
         let sample = |t: &ArcTable, start: f64, mirror: f64| -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
             let h = t.total() / n as f64;
             let at = |s: f64| {
@@ -72,17 +88,19 @@ impl SeamPieces {
             let mid = (0..n).map(|k| at(start + (k as f64 + 0.5) * h)).collect();
             (pts, mid)
         };
-        let (pts_a, mid_a) = sample(&ta, 0.0, 1.0);
-        let (pts_b, mid_b) = sample(&tb, options.offset, -1.0);
-        Ok(SeamPieces {
+        let (pts_a, mid_a) = sample(&self.ta, 0.0, 1.0);
+        let (pts_b, mid_b) = sample(&self.tb, self.offset, -1.0);
+        SeamPieces {
             n,
             flat: [
-                FlatPiece { pts: pts_a, arc_mid: mid_a, area: a.signed_area().abs(), perimeter: pa },
-                FlatPiece { pts: pts_b, arc_mid: mid_b, area: b.signed_area().abs(), perimeter: pb },
+                FlatPiece { pts: pts_a, arc_mid: mid_a, area: self.area[0], perimeter: self.ta.total() },
+                FlatPiece { pts: pts_b, arc_mid: mid_b, area: self.area[1], perimeter: self.tb.total() },
             ],
-        })
+        }
     }
+}
 
+impl SeamPieces {
     /// Flat distance between seam vertices `i` and `j` in piece `p` (a chord of the sample
     /// polygon; the triangulations only use chords that lie inside the piece).
     pub fn chord(&self, p: usize, i: usize, j: usize) -> f64 {

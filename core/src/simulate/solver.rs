@@ -8,15 +8,17 @@ use crate::error::{Error, Result};
 use faer::linalg::solvers::Solve;
 use faer::sparse::{SparseColMat, Triplet};
 use faer::{Mat, Side};
+use std::collections::HashMap;
+use super::seam::Glue;
 
 /// Out-of-plane sine above which a chord counts as reflex and is flipped. Below it the two
 /// triangles are coplanar to round-off and either diagonal is right.
-pub const REFLEX_SINE: f64 = 1e-9;
+pub const REFLEX_SINE: f64 = 1e-6;
 
 /// A step shorter than this (relative to the shape's size) ends the iteration.
 const STEP_TOL: f64 = 1e-11;
 
-/// Largest strain accepted as "converged" on top of the seam's own A/B chord mismatch.
+/// Largest residual strain of the length equations accepted as "converged".
 pub const STRAIN_TOL: f64 = 1e-7;
 
 /// The solver's result: positions, the two triangulations, and how it went.
@@ -52,11 +54,20 @@ struct Bar {
     d: f64,
 }
 
+/// The length equations: every chord of each piece at its flat length, and each seam edge once,
+/// at the mean of A's and B's chord. (The two chords differ by `O(h³)`; one length per seam edge
+/// makes the polyhedral metric consistent, so the square system has an exact solution and the
+/// convexity of each chord is decided by geometry, not by least-squares noise.)
 fn bars(pieces: &SeamPieces, tri: &[Triangulation; 2]) -> Vec<Bar> {
-    let mut out = Vec::with_capacity(4 * pieces.n);
+    let n = pieces.n;
+    let mut out = Vec::with_capacity(3 * n);
     for (p, t) in tri.iter().enumerate() {
         for (i, j) in t.edges() {
-            let d = pieces.chord(p, i, j);
+            let seam = metric::is_seam(n, i, j);
+            if seam && p == 1 {
+                continue;
+            }
+            let d = if seam { 0.5 * (pieces.chord(0, i, j) + pieces.chord(1, i, j)) } else { pieces.chord(p, i, j) };
             if d > 0.0 {
                 out.push(Bar { i, j, d });
             }
@@ -105,9 +116,14 @@ pub fn reflex_sine(x: &[V3], t: &Triangulation, p: usize, i: usize, j: usize) ->
     Some(s * dot(n, dl) / (nn * ndl))
 }
 
+/// How often a chord may be flipped away before it is frozen: a chord that keeps coming back
+/// sits between two nearly coplanar triangles (or a non-convex piece), where flipping it again
+/// would only cycle.
+const MAX_FLIPS_PER_EDGE: u8 = 2;
+
 /// Makes the mesh outward-oriented (positive volume) by mirroring, an isometry, then flips every
 /// reflex chord whose flat quad allows it. Returns the number of flips.
-fn flip_pass(x: &mut [V3], tri: &mut [Triangulation; 2], pieces: &SeamPieces) -> usize {
+fn flip_pass(x: &mut [V3], tri: &mut [Triangulation; 2], pieces: &SeamPieces, count: &mut [HashMap<(usize, usize), u8>; 2]) -> usize {
     if signed_volume(x, tri) < 0.0 {
         for p in x.iter_mut() {
             p[2] = -p[2];
@@ -118,8 +134,12 @@ fn flip_pass(x: &mut [V3], tri: &mut [Triangulation; 2], pieces: &SeamPieces) ->
         let pts = &pieces.flat[p].pts;
         let s2 = metric::size2(pts);
         for (i, j) in tri[p].chords() {
+            if count[p].get(&(i, j)).is_some_and(|&c| c >= MAX_FLIPS_PER_EDGE) {
+                continue;
+            }
             if let Some(s) = reflex_sine(x, &tri[p], p, i, j) {
                 if s > REFLEX_SINE && tri[p].flip(i, j, pts, s2) {
+                    *count[p].entry((i, j)).or_insert(0) += 1;
                     flips += 1;
                 }
             }
@@ -132,9 +152,10 @@ fn flip_pass(x: &mut [V3], tri: &mut [Triangulation; 2], pieces: &SeamPieces) ->
 /// into the saddle that the chord mismatch asks for. Where A's chords are longer than B's, A
 /// (the top sheet, outward normal +z) must bulge across them, which puts the seam low at their
 /// ends: z = −s·(ĉᵀ M̃ ĉ) with M̃ the trace-free part of Σ (d_A² − d_B²) û ûᵀ.
+/// `lift` scales the saddle's height (the multistart tries several).
 /// Congruent pieces glued congruently give M̃ = 0: the flat, doubly covered start, which is
 /// already the solution.
-fn initial_guess(pieces: &SeamPieces) -> Vec<V3> {
+fn initial_guess(pieces: &SeamPieces, lift: f64) -> Vec<V3> {
     let n = pieces.n;
     let (a, b) = (&pieces.flat[0].pts, &pieces.flat[1].pts);
     let centroid = |p: &[[f64; 2]]| {
@@ -185,6 +206,7 @@ fn initial_guess(pieces: &SeamPieces) -> Vec<V3> {
     let r = r2.sqrt();
     let delta = if total > 0.0 { lam / (total / 2.0) } else { 0.0 };
     let amp = if lam > 0.0 && r > 0.0 { 0.5 * delta.sqrt() / r } else { 0.0 };
+    let amp = amp * lift;
     flat.iter()
         .map(|p| {
             let q = (hx * (p[0] * p[0] - p[1] * p[1]) + 2.0 * hxy * p[0] * p[1]) / lam.max(f64::MIN_POSITIVE);
@@ -255,47 +277,91 @@ fn step(x: &[V3], bars: &[Bar], lambda: f64) -> Option<Vec<f64>> {
     d.iter().all(|v| v.is_finite()).then_some(d)
 }
 
-/// Finds the seam positions. Never panics; an input that cannot even be triangulated is an error.
-pub fn solve(pieces: &SeamPieces, options: &SimulateOptions) -> Result<Solution> {
-    let n = pieces.n;
-    let triangulate = |p: usize| {
-        metric::ear_clip(&pieces.flat[p].pts).ok_or_else(|| Error::Infeasible {
-            reason: format!(
-                "The {} piece is too thin or too detailed for {n} seam vertices: its sampled outline cannot be triangulated. Raise the resolution or simplify the outline.",
-                if p == 0 { "first" } else { "second" }
-            ),
+/// Coarsest level of the multilevel start: below this the seam chords of A and B differ too
+/// much for the polyhedral metric to mean anything.
+pub const COARSEST: usize = 32;
+
+/// Lays the finer level's seam vertices onto the coarser solution: each fine sample is mapped
+/// by the affine map of the coarse triangle at its seam edge (flat piece → 3D), for A and for B,
+/// and the two images are averaged. The start is then isometric up to the coarse level's error.
+fn upsample(pc: &SeamPieces, xc: &[V3], tc: &[Triangulation; 2], pf: &SeamPieces) -> Vec<V3> {
+    let (nc, nf) = (pc.n, pf.n);
+    (0..nf)
+        .map(|k| {
+            let m = (k * nc / nf).min(nc - 1);
+            let m1 = (m + 1) % nc;
+            let mut acc = [0.0; 3];
+            let mut w = 0.0;
+            for p in 0..2 {
+                let Some(r) = tc[p].opposite(m, m1) else { continue };
+                let f = &pc.flat[p].pts;
+                if let Some(q) = map_affine([f[m], f[m1], f[r]], [xc[m], xc[m1], xc[r]], pf.flat[p].pts[k]) {
+                    acc = [acc[0] + q[0], acc[1] + q[1], acc[2] + q[2]];
+                    w += 1.0;
+                }
+            }
+            if w > 0.0 {
+                acc.map(|v| v / w)
+            } else {
+                let t = k as f64 * nc as f64 / nf as f64 - m as f64;
+                [0, 1, 2].map(|a| xc[m][a] + t * (xc[m1][a] - xc[m][a]))
+            }
         })
-    };
-    let mut tri = [triangulate(0)?, triangulate(1)?];
-    let mut x = match &options.warm {
-        Some(w) => resample(w, n),
-        None => initial_guess(pieces),
-    };
-    // Bring the start's triangulation to the convex one of the start positions.
+        .collect()
+}
+
+/// Maps flat point `q` into 3D by the affine map that takes flat triangle `f` to `t`.
+pub fn map_affine(f: [[f64; 2]; 3], t: [V3; 3], q: [f64; 2]) -> Option<V3> {
+    let det = (f[1][0] - f[0][0]) * (f[2][1] - f[0][1]) - (f[1][1] - f[0][1]) * (f[2][0] - f[0][0]);
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let (dx, dy) = (q[0] - f[0][0], q[1] - f[0][1]);
+    let b1 = (dx * (f[2][1] - f[0][1]) - dy * (f[2][0] - f[0][0])) / det;
+    let b2 = ((f[1][0] - f[0][0]) * dy - (f[1][1] - f[0][1]) * dx) / det;
+    let b0 = 1.0 - b1 - b2;
+    Some([0, 1, 2].map(|a| b0 * t[0][a] + b1 * t[1][a] + b2 * t[2][a]))
+}
+
+fn triangulate(pieces: &SeamPieces, p: usize) -> Result<Triangulation> {
+    metric::ear_clip(&pieces.flat[p].pts).ok_or_else(|| Error::Infeasible {
+        reason: format!(
+            "The {} piece is too thin or too detailed for {} seam vertices: its sampled outline cannot be triangulated. Raise the resolution or simplify the outline.",
+            if p == 0 { "first" } else { "second" },
+            pieces.n
+        ),
+    })
+}
+
+/// Result of relaxing one level.
+struct Relaxed {
+    iterations: usize,
+    flips: usize,
+    converged: bool,
+}
+
+/// Levenberg–Marquardt on a fixed triangulation until the step is negligible, then one pass of
+/// flips; repeated until nothing flips. `step_tol` is relative to the shape's size.
+fn relax(pieces: &SeamPieces, x: &mut Vec<V3>, tri: &mut [Triangulation; 2], budget: usize, step_tol: f64) -> Relaxed {
+    let n = pieces.n;
+    let mut count = [HashMap::new(), HashMap::new()];
     let mut flips = 0;
     for _ in 0..n {
-        let f = flip_pass(&mut x, &mut tri, pieces);
+        let f = flip_pass(x, tri, pieces, &mut count);
         flips += f;
         if f == 0 {
             break;
         }
     }
-    // Seam chords of A and B differ by the discretization; that part of the residual stays.
-    let seam_mismatch = (0..n)
-        .map(|k| {
-            let (a, b) = (pieces.chord(0, k, (k + 1) % n), pieces.chord(1, k, (k + 1) % n));
-            (a - b).abs() / a.min(b).max(f64::MIN_POSITIVE)
-        })
-        .fold(0.0, f64::max);
-    let scale = size(&x).max(f64::MIN_POSITIVE);
-    let mut bars = bars(pieces, &tri);
-    let mut c = cost(&x, &bars);
+    let scale = size(x).max(f64::MIN_POSITIVE);
+    let mut bars = bars(pieces, tri);
+    let mut c = cost(x, &bars);
     let mut lambda = 1e-4;
     let mut iterations = 0;
     let mut converged = false;
-    while iterations < options.max_iterations {
+    while iterations < budget {
         iterations += 1;
-        let Some(d) = step(&x, &bars, lambda) else {
+        let Some(d) = step(x, &bars, lambda) else {
             lambda *= 10.0;
             if lambda > 1e12 {
                 break;
@@ -304,30 +370,134 @@ pub fn solve(pieces: &SeamPieces, options: &SimulateOptions) -> Result<Solution>
         };
         let trial: Vec<V3> = (0..n).map(|k| [x[k][0] + d[3 * k], x[k][1] + d[3 * k + 1], x[k][2] + d[3 * k + 2]]).collect();
         let ct = cost(&trial, &bars);
-        if !(ct <= c) {
+        let dmax = d.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let stalled = dmax <= step_tol * scale || c == 0.0;
+        if ct <= c {
+            *x = trial;
+            c = ct;
+            lambda = (lambda / 3.0).max(1e-12);
+        } else if !stalled {
             lambda *= 4.0;
             if lambda > 1e12 {
                 break;
             }
             continue;
         }
-        let dmax = d.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        x = trial;
-        c = ct;
-        lambda = (lambda / 3.0).max(1e-12);
-        let f = flip_pass(&mut x, &mut tri, pieces);
-        flips += f;
-        if std::env::var("SIMDBG").is_ok() { eprintln!("it {iterations} cost {c:.3e} lambda {lambda:.1e} dmax {dmax:.2e} flips {f} vol {:.4}", signed_volume(&x, &tri)); }
-        if f > 0 {
-            bars = self::bars(pieces, &tri);
-            c = cost(&x, &bars);
+        if !stalled {
             continue;
         }
-        if dmax <= STEP_TOL * scale || c == 0.0 {
-            let worst = bars.iter().map(|b| (norm(sub(x[b.j], x[b.i])) / b.d - 1.0).abs()).fold(0.0, f64::max);
-            converged = worst <= seam_mismatch + STRAIN_TOL;
-            break;
+        // The realization of this triangulation is found: fold the reflex chords the other way.
+        let f = flip_pass(x, tri, pieces, &mut count);
+        flips += f;
+        if f > 0 {
+            bars = self::bars(pieces, tri);
+            c = cost(x, &bars);
+            lambda = 1e-4;
+            continue;
         }
+        let worst = max_strain(x, &bars);
+        converged = worst <= STRAIN_TOL;
+        break;
     }
-    Ok(Solution { x, tri, iterations, flips, converged })
+    Relaxed { iterations, flips, converged }
+}
+
+/// Steps allowed to one multistart attempt on the coarsest level.
+const ATTEMPT_BUDGET: usize = 60;
+
+/// Saddle heights tried by the multistart, most likely first.
+const LIFTS: [f64; 8] = [1.0, 3.0, 2.0, 0.5, 5.0, 1.5, 8.0, 0.25];
+
+fn max_strain(x: &[V3], bars: &[Bar]) -> f64 {
+    bars.iter().map(|b| (norm(sub(x[b.j], x[b.i])) / b.d - 1.0).abs()).fold(0.0, f64::max)
+}
+
+/// Chords of either piece that are reflex beyond [`REFLEX_SINE`].
+fn reflex_count(x: &[V3], tri: &[Triangulation; 2]) -> usize {
+    (0..2)
+        .map(|p| tri[p].chords().into_iter().filter(|&(i, j)| reflex_sine(x, &tri[p], p, i, j).is_some_and(|s| s > REFLEX_SINE)).count())
+        .sum()
+}
+
+/// Finds the seam positions at `options.resolution` seam vertices, starting from the warm start
+/// or from coarser levels (32, 64, … seam vertices, each laid onto the last). Never panics; an
+/// input that cannot even be triangulated is an error.
+pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solution)> {
+    let n = options.resolution;
+    let mut levels = vec![n];
+    if options.warm.is_none() {
+        while levels[levels.len() - 1] / 2 >= COARSEST {
+            levels.push(levels[levels.len() - 1] / 2);
+        }
+        levels.reverse();
+    }
+    let mut prev: Option<(SeamPieces, Vec<V3>, [Triangulation; 2])> = None;
+    let (mut iterations, mut flips) = (0, 0);
+    let mut converged = false;
+    for (li, &m) in levels.iter().enumerate() {
+        let pieces = glue.sample(m);
+        // The finer level keeps the coarse triangulation (plus one ear per seam edge) where it can.
+        let refine = |p: usize| -> Result<Triangulation> {
+            match &prev {
+                Some((_, _, tc)) if tc[p].len() * 2 == m => match tc[p].doubled(&pieces.flat[p].pts) {
+                    Some(t) => Ok(t),
+                    None => triangulate(&pieces, p),
+                },
+                _ => triangulate(&pieces, p),
+            }
+        };
+        let mut tri = [refine(0)?, refine(1)?];
+        let last = li + 1 == levels.len();
+        let step_tol = if last { STEP_TOL } else { 1e-6 };
+        let (x, r) = match (&prev, &options.warm) {
+            (Some((pc, xc, tc)), _) => {
+                let mut x = upsample(pc, xc, tc, &pieces);
+                let budget = options.max_iterations.saturating_sub(iterations).max(1);
+                let r = relax(&pieces, &mut x, &mut tri, budget, step_tol);
+                (x, r)
+            }
+            (None, Some(w)) => {
+                let mut x = resample(w, m);
+                let budget = options.max_iterations.saturating_sub(iterations).max(1);
+                let r = relax(&pieces, &mut x, &mut tri, budget, step_tol);
+                (x, r)
+            }
+            (None, None) => {
+                // Multistart on the coarsest level (cheap): the saddle's height decides which
+                // isometric branch Gauss–Newton falls into; keep the first convex, converged one.
+                let mut best: Option<(Vec<V3>, Relaxed, [Triangulation; 2], f64)> = None;
+                for lift in LIFTS {
+                    let mut x = initial_guess(&pieces, lift);
+                    let mut t = tri.clone();
+                    let budget = options.max_iterations.saturating_sub(iterations).clamp(1, ATTEMPT_BUDGET);
+                    let r = relax(&pieces, &mut x, &mut t, budget, step_tol);
+                    iterations += r.iterations;
+                    flips += r.flips;
+                    let strain = max_strain(&x, &bars(&pieces, &t));
+                    let good = r.converged && reflex_count(&x, &t) == 0;
+                    if best.as_ref().is_none_or(|b| strain < b.3) {
+                        best = Some((x, r, t, strain));
+                    }
+                    if good || iterations >= options.max_iterations {
+                        break;
+                    }
+                }
+                let Some((x, mut r, t, _)) = best else {
+                    return Err(Error::Infeasible { reason: "No start could be tried.".into() });
+                };
+                tri = t;
+                r.iterations = 0;
+                r.flips = 0;
+                (x, r)
+            }
+        };
+        iterations += r.iterations;
+        flips += r.flips;
+        converged = r.converged;
+        prev = Some((pieces, x, tri));
+    }
+    let Some((pieces, x, tri)) = prev else {
+        return Err(Error::Infeasible { reason: "No seam resolution to solve at.".into() });
+    };
+    Ok((pieces, Solution { x, tri, iterations, flips, converged }))
 }

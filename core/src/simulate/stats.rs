@@ -2,7 +2,7 @@
 //! returned mesh against the flat pieces, independently of the solver's own residuals.
 
 use super::seam::SeamPieces;
-use super::solver::{reflex_sine, signed_volume, Solution};
+use super::solver::{map_affine, reflex_sine, signed_volume, Solution};
 use super::Simulation;
 use std::f64::consts::TAU;
 
@@ -54,19 +54,6 @@ fn cross(a: V3, b: V3) -> V3 {
 fn angle(a: V3, b: V3, c: V3) -> f64 {
     let (u, v) = (sub(b, a), sub(c, a));
     norm(cross(u, v)).atan2(dot(u, v))
-}
-
-/// Maps flat point `q` into 3D by the affine map that takes flat triangle `f` to `t`.
-fn map_affine(f: [[f64; 2]; 3], t: [V3; 3], q: [f64; 2]) -> Option<V3> {
-    let det = (f[1][0] - f[0][0]) * (f[2][1] - f[0][1]) - (f[1][1] - f[0][1]) * (f[2][0] - f[0][0]);
-    if det == 0.0 {
-        return None;
-    }
-    let (dx, dy) = (q[0] - f[0][0], q[1] - f[0][1]);
-    let b1 = (dx * (f[2][1] - f[0][1]) - dy * (f[2][0] - f[0][0])) / det;
-    let b2 = ((f[1][0] - f[0][0]) * dy - (f[1][1] - f[0][1]) * dx) / det;
-    let b0 = 1.0 - b1 - b2;
-    Some([0, 1, 2].map(|a| b0 * t[0][a] + b1 * t[1][a] + b2 * t[2][a]))
 }
 
 /// Builds the output mesh and measures it.

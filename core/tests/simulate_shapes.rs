@@ -1,0 +1,211 @@
+//! `simulate` against the closed-form facts of convex D-forms (Alexandrov–Pogorelov uniqueness,
+//! Demaine & Price: the surface is the convex hull of its seam): every edge keeps its flat
+//! length, the area is the pieces' area, the mesh is convex and closed, congruent pieces glued
+//! congruently give the flat doubly covered piece, and the shape does not depend on resolution.
+//! All figures are recomputed here from the returned mesh, not taken from the solver's stats.
+
+use dformer::arclen::ArcTable;
+use dformer::contour::{Contour, Knot};
+use dformer::simulate::{simulate, SimulateOptions, Simulation};
+use dformer::Error;
+use kurbo::{Affine, Point};
+use std::collections::HashMap;
+
+const K: f64 = 0.552_284_749_830_793_4;
+
+/// Ellipse with semi-axes rx, ry, first anchor at (rx, 0), counter-clockwise.
+fn ellipse(rx: f64, ry: f64) -> Contour {
+    let knots = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)]
+        .iter()
+        .map(|&(x, y): &(f64, f64)| {
+            let a = Point::new(rx * x, ry * y);
+            let t = (-y * rx * K, x * ry * K);
+            Knot { anchor: a, left: Point::new(a.x - t.0, a.y - t.1), right: Point::new(a.x + t.0, a.y + t.1) }
+        })
+        .collect();
+    Contour::new(knots, 0).unwrap()
+}
+
+fn perimeter(c: &Contour) -> f64 {
+    ArcTable::new(c, 1e-13).total()
+}
+
+fn circle_like(e: &Contour) -> Contour {
+    let c = ellipse(1.0, 1.0);
+    c.transformed(Affine::scale(perimeter(e) / perimeter(&c)))
+}
+
+fn run(a: &Contour, b: &Contour, offset: f64, n: usize) -> Simulation {
+    simulate(a, b, &SimulateOptions { offset, resolution: n, ..Default::default() }).expect("simulate")
+}
+
+type V3 = [f64; 3];
+fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn cross(a: V3, b: V3) -> V3 {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Volume and area from the mesh (divergence theorem, cross products).
+fn volume_area(s: &Simulation) -> (f64, f64) {
+    let x = &s.vertices;
+    let (mut v, mut a) = (0.0, 0.0);
+    for &[i, j, k] in &s.triangles {
+        v += dot(x[i], cross(x[j], x[k])) / 6.0;
+        a += dot(cross(sub(x[j], x[i]), sub(x[k], x[i])), cross(sub(x[j], x[i]), sub(x[k], x[i]))).sqrt() / 2.0;
+    }
+    (v, a)
+}
+
+/// Every directed edge once and its reverse once: a closed, consistently oriented surface.
+fn assert_closed(s: &Simulation) {
+    let mut seen: HashMap<(usize, usize), usize> = HashMap::new();
+    for t in &s.triangles {
+        for m in 0..3 {
+            *seen.entry((t[m], t[(m + 1) % 3])).or_default() += 1;
+        }
+    }
+    for (&(a, b), &c) in &seen {
+        assert_eq!(c, 1, "directed edge {a}->{b} used {c} times");
+        assert_eq!(seen.get(&(b, a)), Some(&1), "edge {a}->{b} has no opposite: the mesh is not closed");
+    }
+}
+
+/// Largest height of a vertex above any face's plane, relative to the size: 0 for a convex mesh.
+fn convexity_violation(s: &Simulation) -> f64 {
+    let x = &s.vertices;
+    let size = x.iter().map(|p| dot(*p, *p).sqrt()).fold(0.0, f64::max);
+    let mut worst = 0.0f64;
+    for &[i, j, k] in &s.triangles {
+        let n = cross(sub(x[j], x[i]), sub(x[k], x[i]));
+        let l = dot(n, n).sqrt();
+        if l < 1e-12 * size * size {
+            continue;
+        }
+        for p in x {
+            worst = worst.max(dot(n, sub(*p, x[i])) / l / size);
+        }
+    }
+    worst
+}
+
+#[test]
+fn ellipses_at_quarter_offset_keep_lengths_area_and_are_convex() {
+    let e = ellipse(2.0, 1.0);
+    let p = perimeter(&e);
+    let s = run(&e, &e, p / 4.0, 128);
+    assert!(s.stats.converged, "wanted converged, got {:?}", s.stats);
+    assert_closed(&s);
+    let (v, a) = volume_area(&s);
+    assert!((v - s.stats.volume).abs() <= 1e-9 * v, "volume: stats {} vs mesh {v}", s.stats.volume);
+    let flat = 2.0 * e.signed_area().abs();
+    assert!((a - flat).abs() / flat < 2e-3, "area: wanted {flat}, got {a}");
+    // Seam edges are chords of arc length p/n each.
+    let n = s.seam.len();
+    let seam_len: f64 = (0..n).map(|k| {
+        let d = sub(s.vertices[s.seam[(k + 1) % n]], s.vertices[s.seam[k]]);
+        dot(d, d).sqrt()
+    }).sum();
+    assert!((seam_len - p).abs() / p < 1e-3, "seam length: wanted {p}, got {seam_len}");
+    assert!(s.stats.max_strain < 1e-3, "max strain: wanted < 1e-3, got {}", s.stats.max_strain);
+    let cv = convexity_violation(&s);
+    // The solver leaves chords folded the wrong way by a sine below 1e-6 (solver::REFLEX_SINE).
+    assert!(cv < 1e-5, "a vertex lies {cv} (relative) outside a face plane: not convex");
+    let four_pi = 4.0 * std::f64::consts::PI;
+    assert!((s.stats.angle_defect_sum - four_pi).abs() < 1e-6, "seam |defect| sum: wanted 4π, got {}", s.stats.angle_defect_sum);
+    assert!(v > 0.1 * flat.powf(1.5) / 10.0, "a real volume, got {v}");
+}
+
+#[test]
+fn volume_is_the_same_at_two_resolutions() {
+    let e = ellipse(2.0, 1.0);
+    let c = circle_like(&e);
+    let v64 = run(&e, &c, 0.0, 64).stats.volume;
+    let v128 = run(&e, &c, 0.0, 128).stats.volume;
+    let rel = (v64 - v128).abs() / v128;
+    assert!(rel < 0.02, "volume 64 vs 128 seam vertices: {v64} vs {v128} ({rel:.2e} relative)");
+}
+
+#[test]
+fn congruent_ellipses_at_zero_offset_give_the_flat_doubly_covered_ellipse() {
+    let e = ellipse(2.0, 1.0);
+    let s = run(&e, &e, 0.0, 64);
+    let (v, a) = volume_area(&s);
+    assert!(v.abs() < 1e-9 * a.powf(1.5), "wanted volume 0, got {v}");
+    assert!(s.vertices.iter().all(|p| p[2].abs() < 1e-9), "every vertex in one plane");
+    assert!(s.stats.converged && s.stats.max_strain < 1e-3, "{:?}", s.stats);
+}
+
+#[test]
+fn congruent_circles_give_the_same_flat_shape_at_every_offset() {
+    let c = ellipse(1.0, 1.0);
+    let p = perimeter(&c);
+    for f in [0.0, 0.1, 0.25, 0.37] {
+        let s = run(&c, &c, f * p, 64);
+        let (v, a) = volume_area(&s);
+        assert!(v.abs() < 1e-6 * a.powf(1.5), "offset {f}·perimeter: wanted volume 0, got {v}");
+    }
+}
+
+#[test]
+fn mirror_symmetric_input_gives_a_mirror_symmetric_shape() {
+    // Ellipse with circle at zero offset: both pieces are symmetric about the x axis through
+    // the start point, so the seam's distances are symmetric: |X_k − X_0| = |X_{n−k} − X_0|.
+    let e = ellipse(2.0, 1.0);
+    let c = circle_like(&e);
+    let s = run(&e, &c, 0.0, 64);
+    let n = s.seam.len();
+    let x = &s.vertices;
+    let d = |i: usize, j: usize| dot(sub(x[i], x[j]), sub(x[i], x[j])).sqrt();
+    for k in 1..n / 2 {
+        let (l, r) = (d(0, k), d(0, n - k));
+        assert!((l - r).abs() < 1e-3 * l.max(r), "seam vertex {k}: {l} vs mirror {r}");
+    }
+}
+
+#[test]
+fn warm_start_reaches_the_same_shape() {
+    let e = ellipse(2.0, 1.0);
+    let p = perimeter(&e);
+    let cold = run(&e, &e, p / 4.0, 64);
+    let warm = simulate(&e, &e, &SimulateOptions { offset: p / 4.0, resolution: 64, warm: Some(cold.vertices.clone()), ..Default::default() }).unwrap();
+    let rel = (warm.stats.volume - cold.stats.volume).abs() / cold.stats.volume;
+    assert!(rel < 1e-5 && warm.stats.converged, "warm {} vs cold {} ({rel:.2e})", warm.stats.volume, cold.stats.volume);
+}
+
+#[test]
+fn non_convex_piece_gives_a_finite_shape_and_honest_stats() {
+    // A kidney-like piece (one concave stretch) glued to a circle of the same perimeter.
+    let pts = [(3.0, 0.0), (2.0, 2.0), (0.0, 1.2), (-2.0, 2.0), (-3.0, 0.0), (-2.0, -2.0), (2.0, -2.0)];
+    let knots: Vec<Knot> = (0..pts.len()).map(|i| {
+        let (a, prev, next) = (pts[i], pts[(i + pts.len() - 1) % pts.len()], pts[(i + 1) % pts.len()]);
+        let t = ((next.0 - prev.0) / 6.0, (next.1 - prev.1) / 6.0);
+        Knot { anchor: Point::new(a.0, a.1), left: Point::new(a.0 - t.0, a.1 - t.1), right: Point::new(a.0 + t.0, a.1 + t.1) }
+    }).collect();
+    let k = Contour::new(knots, 0).unwrap();
+    let c = circle_like(&k);
+    let s = run(&k, &c, 0.0, 64);
+    assert!(s.vertices.iter().flatten().all(|v| v.is_finite()), "finite vertices");
+    let size = perimeter(&k);
+    assert!(s.vertices.iter().all(|p| dot(*p, *p).sqrt() < size), "no vertex flies away");
+    if s.stats.converged {
+        assert!(s.stats.max_strain < 1e-3, "converged but strain {}", s.stats.max_strain);
+    }
+}
+
+#[test]
+fn mismatched_perimeters_and_bad_options_are_clear_errors() {
+    let e = ellipse(2.0, 1.0);
+    let big = e.transformed(Affine::scale(1.01));
+    let err = simulate(&e, &big, &SimulateOptions::default()).unwrap_err();
+    assert!(matches!(err, Error::PerimeterMismatch { .. }), "got {err}");
+    assert!(err.to_string().contains("Normalize"), "got {err}");
+    let err = SimulateOptions::new(Some(f64::NAN), None, None, None).unwrap_err();
+    assert!(err.to_string().contains("offset"), "got {err}");
+    let err = SimulateOptions::new(None, Some(3.0), None, None).unwrap_err();
+    assert!(err.to_string().contains("resolution"), "got {err}");
+}

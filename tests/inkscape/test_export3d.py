@@ -1,0 +1,103 @@
+"""3D export: the file holds exactly the D-form the core computed, in the unit asked, and the
+volume and area in the message are those of the written mesh (recomputed here from the file:
+volume by the divergence theorem, sum of signed tetrahedra; area by cross products)."""
+
+import io
+import os
+import re
+import struct
+import tempfile
+import unittest
+from contextlib import redirect_stderr
+
+import support
+
+from dformer_export3d import Export3D
+
+DATA = os.path.join(support.HERE, "data", "svg")
+
+
+def read_obj(path):
+    verts, faces = [], []
+    with open(path, encoding="utf-8") as fh:
+        for line in fh:
+            parts = line.split()
+            if parts and parts[0] == "v":
+                verts.append(tuple(map(float, parts[1:4])))
+            elif parts and parts[0] == "f":
+                faces.append(tuple(int(p) - 1 for p in parts[1:4]))
+    return verts, faces
+
+
+def read_stl(path):
+    with open(path, "rb") as fh:
+        data = fh.read()
+    (n,) = struct.unpack_from("<I", data, 80)
+    assert len(data) == 84 + 50 * n, f"binary STL size: wanted {84 + 50 * n}, got {len(data)}"
+    tris = [struct.unpack_from("<12f", data, 84 + 50 * t)[3:] for t in range(n)]
+    return [(t[0:3], t[3:6], t[6:9]) for t in tris]
+
+
+def volume_area(tris):
+    vol = area = 0.0
+    for a, b, c in tris:
+        cross = (
+            (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
+            (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
+            (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]),
+        )
+        area += 0.5 * sum(x * x for x in cross) ** 0.5
+        vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6
+    return abs(vol), area
+
+
+class Export3dFiles(unittest.TestCase):
+    def export(self, name, *args):
+        path = os.path.join(tempfile.mkdtemp(prefix="dformer-3d-"), name)
+        err = io.StringIO()
+        with redirect_stderr(err):
+            Export3D().run([os.path.join(DATA, "connect_mm.svg"), "--id=A", "--id=B", f"--file={path}", "--resolution=16", *args], output=io.BytesIO())
+        return path, err.getvalue()
+
+    def reported(self, message):
+        m = re.search(r"Volume ([\d.e+-]+) \w+³ \(([\d.e+-]+) L\), surface area ([\d.e+-]+)", message)
+        self.assertIsNotNone(m, f"no volume/area in the message: {message!r}")
+        return float(m.group(1)), float(m.group(2)), float(m.group(3))
+
+    def test_obj_mesh_is_closed_and_its_volume_and_area_are_the_reported_ones(self):
+        path, message = self.export("form.obj")
+        verts, faces = read_obj(path)
+        self.assertGreater(len(faces), 0)
+        edges = {}
+        for f in faces:
+            for i in range(3):
+                e = tuple(sorted((f[i], f[(i + 1) % 3])))
+                edges[e] = edges.get(e, 0) + 1
+        open_edges = [e for e, n in edges.items() if n != 2]
+        self.assertEqual(open_edges, [], "a D-form is a closed surface: every edge in exactly two triangles")
+        vol, area = volume_area([(verts[a], verts[b], verts[c]) for a, b, c in faces])
+        got_vol, litres, got_area = self.reported(message)
+        self.assertLess(support.rel(vol, got_vol), 1e-5, f"volume: file {vol}, message {got_vol}")
+        self.assertLess(support.rel(area, got_area), 1e-5, f"area: file {area}, message {got_area}")
+        self.assertLess(support.rel(litres, vol / 1e6), 1e-5, f"mm³ to litres: wanted {vol / 1e6}, got {litres}")
+
+    def test_stl_holds_the_same_mesh_and_the_unit_scales_it(self):
+        obj, _ = self.export("form.obj")
+        stl, message = self.export("form.stl", "--unit=cm")
+        verts, faces = read_obj(obj)
+        vol_mm, area_mm = volume_area([(verts[a], verts[b], verts[c]) for a, b, c in faces])
+        vol_cm, area_cm = volume_area(read_stl(stl))
+        self.assertLess(support.rel(vol_cm, vol_mm / 1000), 1e-5, f"cm³ = mm³ / 1000: {vol_cm} vs {vol_mm}")
+        self.assertLess(support.rel(area_cm, area_mm / 100), 1e-5, f"cm² = mm² / 100: {area_cm} vs {area_mm}")
+        self.assertLess(support.rel(self.reported(message)[0], vol_cm), 1e-5)
+
+    def test_a_missing_or_wrong_file_name_is_an_error(self):
+        for name, wanted in (("", "Choose the file"), ("form.ply", ".obj or .stl")):
+            err = io.StringIO()
+            with redirect_stderr(err), self.assertRaises(SystemExit):
+                Export3D().run([os.path.join(DATA, "connect_mm.svg"), "--id=A", "--id=B", f"--file={name}"], output=io.BytesIO())
+            self.assertIn(wanted, err.getvalue())
+
+
+if __name__ == "__main__":
+    unittest.main()

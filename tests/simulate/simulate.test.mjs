@@ -1,0 +1,94 @@
+// simulate(pieces, options) from Node: the mesh is checked here (closed, convex, volume and area
+// recomputed from the triangles), not read from the module's own stats.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { createRequire } from 'node:module';
+
+const require = createRequire(import.meta.url);
+const m = require(process.env.DFORMER_PKG ?? '../../core/pkg/dformer.js');
+
+const K = 0.5522847498307936;
+const ellipse = (rx, ry, s = 1) => ({
+  closed: true,
+  points: [[1, 0], [0, 1], [-1, 0], [0, -1]].map(([x, y]) => {
+    const a = [s * rx * x, s * ry * y], t = [-y * rx * K * s, x * ry * K * s];
+    return { anchor: a, left: [a[0] - t[0], a[1] - t[1]], right: [a[0] + t[0], a[1] + t[1]] };
+  }),
+});
+const e = ellipse(2, 1);
+const P = m.measure(e).perimeter;
+const circle = ellipse(1, 1, P / m.measure(ellipse(1, 1)).perimeter);
+
+const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+function volumeArea(r) {
+  let v = 0, a = 0;
+  for (const [i, j, k] of r.triangles) {
+    const x = r.vertices;
+    v += dot(x[i], cross(x[j], x[k])) / 6;
+    a += Math.hypot(...cross(sub(x[j], x[i]), sub(x[k], x[i]))) / 2;
+  }
+  return { v, a };
+}
+
+test('ellipses at a quarter offset: closed convex mesh, area of the pieces, seam of the perimeter', () => {
+  const r = m.simulate([e, e], { offset: P / 4, resolution: 128 });
+  assert.equal(r.triangles.length, r.piece.length);
+  assert.equal(r.seam.length, 128);
+  const edges = new Map();
+  for (const t of r.triangles) for (let q = 0; q < 3; q++) edges.set(`${t[q]},${t[(q + 1) % 3]}`, 1);
+  for (const key of edges.keys()) {
+    const [a, b] = key.split(',');
+    assert.ok(edges.has(`${b},${a}`), `edge ${a}->${b} has no opposite: mesh not closed`);
+  }
+  const { v, a } = volumeArea(r);
+  const flat = 2 * m.measure(e).area;
+  assert.ok(Math.abs(a - flat) / flat < 2e-3, `area: wanted ${flat}, got ${a}`);
+  assert.ok(Math.abs(v - r.stats.volume) < 1e-9 * v, `volume: stats ${r.stats.volume} vs mesh ${v}`);
+  let seam = 0;
+  for (let k = 0; k < r.seam.length; k++) {
+    const d = sub(r.vertices[r.seam[(k + 1) % r.seam.length]], r.vertices[r.seam[k]]);
+    seam += Math.hypot(...d);
+  }
+  assert.ok(Math.abs(seam - P) / P < 1e-3, `seam length: wanted ${P}, got ${seam}`);
+  assert.ok(r.stats.converged, `converged: ${JSON.stringify(r.stats)}`);
+  assert.ok(r.stats.maxStrain < 1e-3, `max strain ${r.stats.maxStrain}`);
+  assert.ok(Math.abs(r.stats.angleDefectSum - 4 * Math.PI) < 1e-6, `seam defect: wanted 4π, got ${r.stats.angleDefectSum}`);
+  assert.ok(r.stats.ms >= 0 && Number.isFinite(r.stats.ms), `ms ${r.stats.ms}`);
+});
+
+test('congruent ellipses at zero offset: the flat doubly covered ellipse', () => {
+  const r = m.simulate([e, e], { offset: 0, resolution: 64 });
+  const { v, a } = volumeArea(r);
+  assert.ok(Math.abs(v) < 1e-9 * a ** 1.5, `wanted volume 0, got ${v}`);
+});
+
+test('congruent circles: flat at every offset', () => {
+  for (const f of [0, 0.2, 0.45]) {
+    const r = m.simulate([circle, circle], { offset: f * P, resolution: 64 });
+    const { v, a } = volumeArea(r);
+    assert.ok(Math.abs(v) < 1e-6 * a ** 1.5, `offset ${f}: wanted volume 0, got ${v}`);
+  }
+});
+
+test('ellipse with circle: same volume at 128 and 256 seam vertices', () => {
+  const v1 = m.simulate([e, circle], { resolution: 128 }).stats.volume;
+  const v2 = m.simulate([e, circle], { resolution: 256 }).stats.volume;
+  assert.ok(Math.abs(v1 - v2) / v2 < 5e-3, `volume 128 vs 256: ${v1} vs ${v2}`);
+});
+
+test('warm start from a previous result gives the same shape', () => {
+  const cold = m.simulate([e, e], { offset: P / 4, resolution: 64 });
+  const warm = m.simulate([e, e], { offset: P / 4, resolution: 64, warm: cold.vertices });
+  assert.ok(Math.abs(warm.stats.volume - cold.stats.volume) / cold.stats.volume < 1e-5,
+    `warm ${warm.stats.volume} vs cold ${cold.stats.volume}`);
+});
+
+test('bad input throws a specific Error', () => {
+  assert.throws(() => m.simulate([e], {}), /Expected exactly two pieces to simulate, got 1/);
+  assert.throws(() => m.simulate([e, ellipse(2, 1, 1.01)], {}), /different perimeters.*Normalize/);
+  assert.throws(() => m.simulate([e, e], { resolution: 3 }), /Option `resolution`/);
+  assert.throws(() => m.simulate([e, e], { offset: Infinity }), /offset|Invalid input/);
+  assert.throws(() => m.simulate([e, { closed: false, points: e.points }], {}), /second path is open/);
+});
