@@ -141,12 +141,15 @@ fn pair_intersects(a: &Seg, b: &Seg, next: bool, wrap: bool) -> bool {
         joins.push(a.c.p0);
     }
     // Adjacent segments separated by their tangent cones at every shared anchor meet only there.
-    let separated = |j: Point| match (cone(&a.c, j), cone(&b.c, j)) {
+    let separated = |j: Point| {
+        half_plane_split(&a.c, &b.c, j)
+            || match (cone(&a.c, j), cone(&b.c, j)) {
         (Some(ca), Some(cb)) => {
             let gap = ca.0.cross(cb.0).atan2(ca.0.dot(cb.0)).abs();
             gap > ca.1 + cb.1 + 1e-9
         }
         _ => false,
+    }
     };
     if !joins.is_empty() && joins.iter().all(|&j| separated(j)) {
         return false;
@@ -172,6 +175,28 @@ fn pair_intersects(a: &Seg, b: &Seg, next: bool, wrap: bool) -> bool {
         let p = Point::new(p.x, p.y);
         p.x.is_finite() && p.y.is_finite() && joins.iter().all(|&j| (p - j).hypot() > JOIN)
     })
+}
+
+/// Cheap sufficient test (no trigonometry) that the control points of `a` and `b` other than
+/// the shared anchor `j` lie strictly on opposite sides of a line through `j`: the line
+/// perpendicular to `w = dir(b) − dir(a)`, where `dir` is the unit direction from `j` to the
+/// farthest control point. True for every ordinary join (a smooth join or a corner < 180°).
+fn half_plane_split(a: &CubicBez, b: &CubicBez, j: Point) -> bool {
+    let far = |c: &CubicBez| {
+        [c.p0, c.p1, c.p2, c.p3].iter().map(|&p| p - j).fold(Vec2::ZERO, |m, v| if v.hypot2() > m.hypot2() { v } else { m })
+    };
+    let (fa, fb) = (far(a), far(b));
+    if fa.hypot2() == 0.0 || fb.hypot2() == 0.0 {
+        return false;
+    }
+    let w = fb / fb.hypot2().sqrt() - fa / fa.hypot2().sqrt();
+    let side = |c: &CubicBez, sign: f64| {
+        [c.p0, c.p1, c.p2, c.p3].iter().all(|&p| {
+            let v = p - j;
+            v.hypot2() <= DEGENERATE * DEGENERATE || sign * w.dot(v) > 1e-12 * v.hypot2().sqrt()
+        })
+    };
+    side(a, -1.0) && side(b, 1.0)
 }
 
 /// The convex cone at anchor `j` containing the control points of `c` (other than those at

@@ -114,3 +114,21 @@ test('a file that is not SVG: its name and the parser message, nothing loaded', 
   assert.match(await page.textContent('#message'), /broken\.svg is not well-formed SVG/);
   await page.close();
 });
+
+test('the built browser app works opened from disk (file://: WASM inlined, no fetch)', async (t) => {
+  const { existsSync } = await import('node:fs');
+  const { join } = await import('node:path');
+  const { repo } = await import('./support.mjs');
+  const index = join(repo, 'dist', 'd-former-web', 'index.html');
+  if (!existsSync(index)) return t.skip('run `node uxp-panel/build.mjs` first');
+  const page = await browser.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(`file://${index}`);
+  await waitReady(page, 'load');
+  await page.selectOption('#sample-select', 'ellipse-circle');
+  await waitReady(page);
+  assert.match(await page.textContent('#stats'), /^24 connectors/, await page.textContent('#message'));
+  assert.deepEqual(errors, []);
+  await page.close();
+});

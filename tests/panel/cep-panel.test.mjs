@@ -178,3 +178,51 @@ test('"start at the selected anchor": connector 1 sits at the anchor picked with
   assert.ok(Math.abs(ls - ld) <= 1e-6 * ls, `perimeters in a float32 document: ${ls} vs ${ld} (wanted equal to 1e-6)`);
   await page.close();
 });
+
+test('layer colours and hairline widths are configurable, used by Apply and remembered by the next session', async () => {
+  const context = await browser.newContext();
+  const first = await openPanel(browser, server.url, TWO_SHAPES, { context });
+  const { page, host } = first;
+  await waitReady(page);
+  await page.click('#sec-layers summary');
+  await page.$eval('.layer-row[data-layer="cut"] .layer-color', (el) => {
+    el.value = '#00aa00';
+    el.dispatchEvent(new Event('input'));
+  });
+  await page.fill('.layer-row[data-layer="cut"] .layer-width', '0.1'); // mm
+  await page.click('#apply-btn');
+  await page.waitForFunction(() => document.body.dataset.applied);
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#message'));
+  const holes = items(host.snapshot()[0]).filter((i) => /^hole \d+$/.test(i.name));
+  assert.ok(holes.length > 0);
+  for (const h of holes) {
+    assert.deepEqual(h.strokeColor.rgb, [0, 170, 0], `${h.name} stroke colour`);
+    assert.ok(Math.abs(h.strokeWidth - 0.1 * MM) < 1e-9, `${h.name} stroke width: wanted ${0.1 * MM} pt, got ${h.strokeWidth}`);
+  }
+  await page.close();
+  const second = await openPanel(browser, server.url, TWO_SHAPES, { context });
+  await waitReady(second.page);
+  assert.equal(await second.page.$eval('.layer-row[data-layer="cut"] .layer-color', (el) => el.value), '#00aa00', 'colour remembered');
+  assert.equal(await second.page.$eval('.layer-row[data-layer="cut"] .layer-width', (el) => el.value), '0.1', 'width remembered (mm)');
+  await context.close();
+});
+
+test('teeth: each piece gets its toothed cut outline on the Cut layer; the normalized paths stay equal', async () => {
+  const { page, host } = await openPanel(browser, server.url, TWO_SHAPES);
+  await waitReady(page);
+  await page.click('#kind button[data-kind="teeth"]');
+  await page.fill('#count', '16');
+  await page.waitForFunction(() => /^16 connectors/.test(document.querySelector('#stats').textContent));
+  await page.click('#apply-btn');
+  await page.waitForFunction(() => document.body.dataset.applied);
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#message'));
+  const all = items(host.snapshot()[0]);
+  const outlines = ['A', 'B'].map((k) => all.find((i) => i.group === `D-former piece ${k} connectors` && i.name === 'outline'));
+  assert.ok(outlines.every(Boolean), 'an outline per piece');
+  assert.ok(outlines.every((o) => o.layer === 'Cut' && o.points.length > 16 * 3), `toothed outlines: ${outlines.map((o) => o.points.length)} anchors`);
+  assert.equal(all.filter((i) => /^hole \d+$/.test(i.name)).length, 0, 'teeth make no holes');
+  const [pa, pb] = ['Ellipse', 'Circle'].map((n) => lengthOf(all.find((i) => i.name === n && i.typename === 'PathItem')));
+  assert.ok(Math.abs(pa - pb) <= 1e-9 * pa, `normalized perimeters: ${pa} vs ${pb}`);
+  for (const o of outlines) assert.ok(lengthOf(o) > pa, `a toothed edge (${lengthOf(o)}) is longer than the plain one (${pa})`);
+  await page.close();
+});

@@ -33,10 +33,12 @@ function installCep(skin) {
   };
 }
 
-/** Opens the panel page on `url` with a simulated Illustrator document; returns { page, host, calls }. */
-export async function openPanel(browser, url, hostOptions, { skin = SKINS.dark, viewport = { width: 300, height: 640 } } = {}) {
+/** Opens the panel page on `url` with a simulated Illustrator document (in `context` if given, to share
+ * localStorage between panel sessions); returns { page, host, calls, errors }. */
+export async function openPanel(browser, url, hostOptions, { skin = SKINS.dark, viewport = { width: 300, height: 640 }, context = null } = {}) {
   const host = createHost(hostOptions);
-  const page = await browser.newPage({ viewport });
+  const page = context ? await context.newPage() : await browser.newPage({ viewport });
+  if (context) await page.setViewportSize(viewport);
   const calls = [];
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));

@@ -64,11 +64,13 @@ test('congruent ellipses at zero offset: the flat doubly covered ellipse', () =>
   assert.ok(Math.abs(v) < 1e-9 * a ** 1.5, `wanted volume 0, got ${v}`);
 });
 
+// A 4-arc Bézier circle is not a circle (radius wobble 2.7e-4), so away from multiples of a
+// quarter turn the gluing is only nearly congruent: nearly flat, not exactly flat.
 test('congruent circles: flat at every offset', () => {
   for (const f of [0, 0.2, 0.45]) {
     const r = m.simulate([circle, circle], { offset: f * P, resolution: 64 });
     const { v, a } = volumeArea(r);
-    assert.ok(Math.abs(v) < 1e-6 * a ** 1.5, `offset ${f}: wanted volume 0, got ${v}`);
+    assert.ok(Math.abs(v) < 1e-3 * a ** 1.5, `offset ${f}: wanted volume ≈ 0, got ${v}`);
   }
 });
 

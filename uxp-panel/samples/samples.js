@@ -32,7 +32,9 @@
       name: 'Two ellipses (crossed)',
       files: [
         { name: 'ellipse-wide.svg', text: svg(170, 100, '<ellipse id="wide" cx="85" cy="50" rx="76" ry="38"/>') },
-        { name: 'ellipse-tall.svg', text: svg(100, 170, '<g transform="rotate(90 50 85)"><ellipse id="tall" cx="50" cy="85" rx="72" ry="40"/></g>') },
+        // Drawn upright, so its first anchor is at the end of its minor axis: the wide ellipse's
+        // major-axis end meets it, the classic crossed D-form.
+        { name: 'ellipse-tall.svg', text: svg(100, 170, '<ellipse id="tall" cx="50" cy="85" rx="40" ry="72"/>') },
       ],
     },
   ];

@@ -28,6 +28,7 @@
   var viewer = null;
   var mesh = null; // last simulate() result and the pieces it was solved for (warm start)
   var meshKey = '';
+  var meshOffset = 0;
 
   /** Length fields: where each value (points) lives. */
   var LEN = {
@@ -346,12 +347,16 @@
     var pieces = design.pieces.map(function (p) { return p.path; });
     var key = JSON.stringify(pieces);
     var options = { offset: design.offset };
-    if (mesh && meshKey === key) options.warm = mesh.vertices;
+    // Warm start only for small steps (a slider drag); a far-away shape is a worse start than none.
+    var step = mesh ? Math.abs(design.offset - meshOffset) : Infinity;
+    step = Math.min(step, design.perimeter - step);
+    if (mesh && meshKey === key && step <= 0.05 * design.perimeter) options.warm = mesh.vertices;
     $('#offset3d').value = String(Math.round((design.offset / design.perimeter) * 1000));
     $('#offset3d-out').textContent = fmt(design.offset);
     try {
       mesh = DF.core.simulate(pieces, options);
       meshKey = key;
+      meshOffset = design.offset;
     } catch (e) {
       mesh = null;
       viewer.setMesh(null);

@@ -12,6 +12,62 @@
     return [v[0] / l, v[1] / l, v[2] / l];
   }
 
+  /** Fills a screen-space triangle (x, y, depth; larger depth = nearer) with a depth test. */
+  function fillTriangle(px, depth, W, H, p0, p1, p2, r, g, b) {
+    var area = (p1[0] - p0[0]) * (p2[1] - p0[1]) - (p1[1] - p0[1]) * (p2[0] - p0[0]);
+    if (!area) return;
+    var minX = Math.max(0, Math.floor(Math.min(p0[0], p1[0], p2[0])));
+    var maxX = Math.min(W - 1, Math.ceil(Math.max(p0[0], p1[0], p2[0])));
+    var minY = Math.max(0, Math.floor(Math.min(p0[1], p1[1], p2[1])));
+    var maxY = Math.min(H - 1, Math.ceil(Math.max(p0[1], p1[1], p2[1])));
+    var inv = 1 / area;
+    for (var y = minY; y <= maxY; y++) {
+      var cy = y + 0.5;
+      for (var x = minX; x <= maxX; x++) {
+        var cx = x + 0.5;
+        var w0 = ((p1[0] - cx) * (p2[1] - cy) - (p1[1] - cy) * (p2[0] - cx)) * inv;
+        var w1 = ((p2[0] - cx) * (p0[1] - cy) - (p2[1] - cy) * (p0[0] - cx)) * inv;
+        var w2 = 1 - w0 - w1;
+        if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+        var z = w0 * p0[2] + w1 * p1[2] + w2 * p2[2];
+        var idx = y * W + x;
+        if (z <= depth[idx]) continue;
+        depth[idx] = z;
+        var o = idx * 4;
+        px[o] = r;
+        px[o + 1] = g;
+        px[o + 2] = b;
+        px[o + 3] = 255;
+      }
+    }
+  }
+
+  /** A depth-tested line (seam) of the given pixel width, drawn over the surface it lies on. */
+  function line(px, depth, W, H, a, b, bias, width) {
+    var n = Math.ceil(Math.max(Math.abs(b[0] - a[0]), Math.abs(b[1] - a[1]))) + 1;
+    var half = width / 2;
+    for (var i = 0; i <= n; i++) {
+      var t = i / n;
+      var x = a[0] + t * (b[0] - a[0]);
+      var y = a[1] + t * (b[1] - a[1]);
+      var z = a[2] + t * (b[2] - a[2]) + bias;
+      for (var dy = -half; dy <= half; dy++) {
+        for (var dx = -half; dx <= half; dx++) {
+          var xi = Math.round(x + dx);
+          var yi = Math.round(y + dy);
+          if (xi < 0 || yi < 0 || xi >= W || yi >= H) continue;
+          var idx = yi * W + xi;
+          if (z < depth[idx]) continue;
+          var o = idx * 4;
+          px[o] = 192;
+          px[o + 1] = 24;
+          px[o + 2] = 42;
+          px[o + 3] = 255;
+        }
+      }
+    }
+  }
+
   function create(canvas) {
     var mesh = null;
     var center = [0, 0, 0];
@@ -20,6 +76,7 @@
     var pitch = 1.0; // radians from looking straight down the z axis
     var zoom = 1;
     var drag = null;
+    var buffer = null;
 
     function setMesh(result) {
       mesh = result;
@@ -55,6 +112,12 @@
       return [x1, cp * y1 - sp * z, sp * y1 + cp * z];
     }
 
+    /**
+     * Software z-buffer rendering into an ImageData (2× supersampled, then scaled down): correct
+     * occlusion for any triangle shape (the solver's long seam-to-seam triangles defeat the
+     * painter's algorithm), no dependence on WebGL being available. Flat two-sided Lambert
+     * shading; the seam is drawn with a depth test (small bias) so its hidden half stays hidden.
+     */
     function draw() {
       var dpr = window.devicePixelRatio || 1;
       var w = canvas.clientWidth;
@@ -64,54 +127,44 @@
         canvas.height = Math.round(h * dpr);
       }
       var ctx = canvas.getContext('2d');
-      ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-      ctx.clearRect(0, 0, w, h);
-      if (!mesh || !mesh.vertices.length) return;
-      var s = (0.45 * Math.min(w, h) * zoom) / radius;
-      var P = mesh.vertices.map(function (v) {
-        var t = transform(v);
-        return [w / 2 + s * t[0], h / 2 - s * t[1], t[2]];
-      });
+      ctx.setTransform(1, 0, 0, 1, 0, 0);
+      ctx.clearRect(0, 0, canvas.width, canvas.height);
+      if (!mesh || !mesh.vertices.length || !canvas.width || !canvas.height) return;
+      var ss = 2;
+      var W = canvas.width * ss;
+      var H = canvas.height * ss;
+      if (!buffer || buffer.width !== W || buffer.height !== H) {
+        buffer = document.createElement('canvas');
+        buffer.width = W;
+        buffer.height = H;
+      }
+      var bctx = buffer.getContext('2d');
+      var image = bctx.createImageData(W, H);
+      var px = image.data;
+      var depth = new Float32Array(W * H).fill(-Infinity);
+      var s = (0.45 * Math.min(W, H) * zoom) / radius;
       var V = mesh.vertices.map(transform);
-      var order = mesh.triangles.map(function (t, i) {
-        return { i: i, depth: V[t[0]][2] + V[t[1]][2] + V[t[2]][2] };
-      });
-      order.sort(function (a, b) { return a.depth - b.depth; });
-      ctx.lineJoin = 'round';
-      order.forEach(function (o) {
-        var t = mesh.triangles[o.i];
+      var P = V.map(function (t) { return [W / 2 + s * t[0], H / 2 - s * t[1], t[2]]; });
+      mesh.triangles.forEach(function (t, i) {
         var a = V[t[0]];
         var b = V[t[1]];
         var c = V[t[2]];
         var u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
         var v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
         var n = normalize3([u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]);
-        var lambert = Math.abs(n[0] * LIGHT[0] + n[1] * LIGHT[1] + n[2] * LIGHT[2]);
-        var k = 0.35 + 0.65 * lambert;
-        var col = COLORS[mesh.piece[o.i] ? 1 : 0];
-        var fill = 'rgb(' + Math.round(col[0] * k) + ',' + Math.round(col[1] * k) + ',' + Math.round(col[2] * k) + ')';
-        ctx.beginPath();
-        ctx.moveTo(P[t[0]][0], P[t[0]][1]);
-        ctx.lineTo(P[t[1]][0], P[t[1]][1]);
-        ctx.lineTo(P[t[2]][0], P[t[2]][1]);
-        ctx.closePath();
-        ctx.fillStyle = fill;
-        ctx.strokeStyle = fill; // hides hairline gaps between neighbours
-        ctx.lineWidth = 0.6;
-        ctx.fill();
-        ctx.stroke();
+        var k = 0.35 + 0.65 * Math.abs(n[0] * LIGHT[0] + n[1] * LIGHT[1] + n[2] * LIGHT[2]);
+        var col = COLORS[mesh.piece[i] ? 1 : 0];
+        fillTriangle(px, depth, W, H, P[t[0]], P[t[1]], P[t[2]], Math.round(col[0] * k), Math.round(col[1] * k), Math.round(col[2] * k));
       });
       if (mesh.seam && mesh.seam.length > 1) {
-        ctx.beginPath();
-        mesh.seam.forEach(function (idx, i) {
-          if (i === 0) ctx.moveTo(P[idx][0], P[idx][1]);
-          else ctx.lineTo(P[idx][0], P[idx][1]);
-        });
-        ctx.closePath();
-        ctx.strokeStyle = '#c0182a';
-        ctx.lineWidth = 1.6;
-        ctx.stroke();
+        var bias = 0.01 * radius;
+        for (var j = 0; j < mesh.seam.length; j++) {
+          line(px, depth, W, H, P[mesh.seam[j]], P[mesh.seam[(j + 1) % mesh.seam.length]], bias, 2 * ss);
+        }
       }
+      bctx.putImageData(image, 0, 0);
+      ctx.imageSmoothingEnabled = true;
+      ctx.drawImage(buffer, 0, 0, canvas.width, canvas.height);
     }
 
     canvas.addEventListener('pointerdown', function (e) {

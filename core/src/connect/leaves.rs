@@ -25,7 +25,7 @@ pub const WIDTH: f64 = 0.8;
 
 /// Whether connector k's leaf belongs to piece `index` (0 = A).
 pub fn owns(index: usize, k: usize, invert: bool) -> bool {
-    ((k % 2 == 0) != invert) == (index == 0)
+    (k.is_multiple_of(2) != invert) == (index == 0)
 }
 
 /// Checks that a leaf (with kerf) is narrower than the pitch, so neighbours never touch on a

@@ -26,7 +26,7 @@ impl Walked {
     /// (Green's theorem, [`Contour::signed_area`]).
     pub fn new(input: &Contour, index: usize, ccw: bool, accuracy: f64) -> Result<Self> {
         let area = input.signed_area();
-        if !(area.abs() > 0.0) {
+        if area == 0.0 || area.is_nan() {
             return Err(Error::Infeasible {
                 reason: format!(
                     "The {} piece encloses no area, so it has no inside for the connectors.",

@@ -499,5 +499,14 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
     let Some((pieces, x, tri)) = prev else {
         return Err(Error::Infeasible { reason: "No seam resolution to solve at.".into() });
     };
+    // A warm start that leads nowhere convex (e.g. vertices of another shape) is dropped for a
+    // cold solve rather than returned.
+    if options.warm.is_some() && !(converged && reflex_count(&x, &tri) == 0) {
+        let cold = SimulateOptions { warm: None, ..options.clone() };
+        let (p, mut sol) = solve(glue, &cold)?;
+        sol.iterations += iterations;
+        sol.flips += flips;
+        return Ok((p, sol));
+    }
     Ok((pieces, Solution { x, tri, iterations, flips, converged }))
 }
