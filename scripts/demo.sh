@@ -1,7 +1,26 @@
 #!/usr/bin/env bash
-# The main job: sets up what is missing, builds the core, runs it on the bundled sample shapes.
+# The main job on the bundled sample shapes: two different outlines are measured, normalized to
+# one perimeter and given paired stitching holes, written as a laser-ready SVG (out/demo.svg),
+# with the perimeters printed before and after. Uses the `dformer` command (cli/), the same core
+# that the Illustrator panel, the browser app and the Inkscape extension run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-bash scripts/build-wasm.sh
-node scripts/demo.mjs "$@"
+cargo build --quiet --release -p dformer-cli
+dformer="${CARGO_TARGET_DIR:-target}/release/dformer"
+sample=samples/pebble-and-ellipse.svg
+out=out/demo.svg
+mkdir -p out
+
+echo "== Bundled sample: $sample"
+"$dformer" measure "$sample"
+echo
+echo "== Normalized to the mean perimeter, each shape scaled about its centre"
+"$dformer" normalize "$sample" --target mean -o "$out.normalized.svg"
+"$dformer" measure "$out.normalized.svg"
+echo
+echo "== Paired stitching holes, about every 12 mm, 2.5 mm across, 4 mm in from the edge"
+"$dformer" connect "$out.normalized.svg" --kind stitch --pitch 12mm --diameter 2.5mm --inset 4mm -o "$out"
+rm -f "$out.normalized.svg"
+echo
+echo "Wrote $out (cut: red hairline, score: blue, engrave: black). Open it in a browser, Inkscape or Illustrator."

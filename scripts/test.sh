@@ -13,8 +13,9 @@ step() { printf '\n\033[1m== %s ==\033[0m\n' "$*"; }
 step "Rust core (cargo test)"
 cargo test --workspace --quiet
 
-step "WebAssembly build"
+step "WebAssembly build (Node package core/pkg, web package core/pkg-web, CEP panel in dist/)"
 bash scripts/build-wasm.sh
+node uxp-panel/build.mjs
 
 step "Node tests (node --test)"
 node --test tests/

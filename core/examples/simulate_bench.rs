@@ -2,8 +2,10 @@
 //! ellipses (axes 2:1) at a quarter-perimeter ("90°") offset and for an ellipse with a circle.
 //! Run: `cargo run --release -p dformer --example simulate_bench`.
 //!
-//! The "exact convex solution" is the Richardson extrapolation (error O(h²) in the seam step h)
-//! of this solver's volume at 1024 and 2048 seam vertices; the figures are the targets.
+//! The "exact convex solution" is estimated by Richardson extrapolation of this solver's volume
+//! at 256, 512 and 1024 seam vertices, with the convergence order observed from the three (the
+//! polyhedron's volume error is O(h²) in the seam step h for smooth convex seams). This is an
+//! estimate of the smooth limit, not an independent exact embedding; it is printed as such.
 
 use dformer::arclen::ArcTable;
 use dformer::contour::{Contour, Knot};
@@ -42,30 +44,50 @@ fn mark(ok: bool) -> &'static str {
     if ok { "PASS" } else { "MISS" }
 }
 
+/// Richardson extrapolation of volumes at `n`, `2n`, `4n` seam vertices: the observed order
+/// `q = log2((v1 − v2)/(v2 − v4))` and the limit `v4 + (v4 − v2)/(2^q − 1)`.
+fn richardson(v1: f64, v2: f64, v4: f64) -> (f64, f64) {
+    let q = ((v1 - v2) / (v2 - v4)).abs().log2();
+    let q = if q.is_finite() && q > 0.5 { q } else { 2.0 };
+    (v4 + (v4 - v2) / (2f64.powf(q) - 1.0), q)
+}
+
 fn run(name: &str, a: &Contour, b: &Contour, offset: f64) {
     let p = perimeter(a);
     let opts = |n: usize| SimulateOptions { offset, resolution: n, ..Default::default() };
     let v = |n: usize| simulate(a, b, &opts(n)).expect("simulate").stats.volume;
-    let exact = {
-        let (v1, v2) = (v(1024), v(2048));
-        v2 + (v2 - v1) / 3.0
-    };
+    let (v512, v1024) = (v(512), v(1024));
     // Warm-up, then the timed runs.
     let _ = simulate(a, b, &opts(256)).unwrap();
-    let reps = 5;
-    let t0 = Instant::now();
+    let reps = 10;
+    let mut times = Vec::with_capacity(reps);
     let mut sim = None;
     for _ in 0..reps {
+        let t0 = Instant::now();
         sim = Some(simulate(a, b, &opts(256)).unwrap());
+        times.push(t0.elapsed().as_secs_f64() * 1e3);
     }
-    let ms = t0.elapsed().as_secs_f64() * 1e3 / reps as f64;
-    let s = sim.unwrap().stats;
+    times.sort_by(f64::total_cmp);
+    let (ms, ms_min) = (times[reps / 2], times[0]);
+    let sim = sim.unwrap();
+    let s = sim.stats.clone();
+    // A slider step: re-solve at an offset 1 % of the perimeter further, warm from this result.
+    let warm_opts = SimulateOptions { offset: offset + 0.01 * p, warm: Some(sim.vertices.clone()), ..opts(256) };
+    let t0 = Instant::now();
+    let warm = simulate(a, b, &warm_opts).unwrap();
+    let warm_ms = t0.elapsed().as_secs_f64() * 1e3;
+    let cold_next = simulate(a, b, &SimulateOptions { warm: None, ..warm_opts.clone() }).unwrap();
+    let warm_dv = (warm.stats.volume - cold_next.stats.volume).abs() / cold_next.stats.volume.max(f64::MIN_POSITIVE);
+    let (exact, q) = richardson(s.volume, v512, v1024);
     let v128 = v(128);
     let dv = (s.volume - exact).abs() / exact;
     let dres = (s.volume - v128).abs() / s.volume;
     let four_pi = 4.0 * std::f64::consts::PI;
     println!("== {name} (256 seam vertices, perimeter {p:.6}) ==");
-    println!("  volume {:.6} vs extrapolated exact {:.6}: {:.3e} relative (≤ 2e-3) {}", s.volume, exact, dv, mark(dv <= 2e-3));
+    println!(
+        "  volume {:.6} vs reference {:.6} (Richardson extrapolation of 256/512/1024 seam vertices, observed order {:.2}): {:.3e} relative (≤ 2e-3) {}",
+        s.volume, exact, q, dv, mark(dv <= 2e-3)
+    );
     println!("  max edge strain {:.3e} (≤ 1e-3) {}   mean {:.3e}", s.max_strain, mark(s.max_strain <= 1e-3), s.mean_strain);
     println!("  seam gap {:.3e} of perimeter (≤ 1e-4) {}", s.seam_gap / p, mark(s.seam_gap / p <= 1e-4));
     println!("  area error {:.3e} (≤ 1e-3) {}", s.area_error, mark(s.area_error <= 1e-3));
@@ -77,7 +99,14 @@ fn run(name: &str, a: &Contour, b: &Contour, offset: f64) {
         four_pi
     );
     println!("  volume change 128→256 {:.3e} (≤ 5e-3) {}", dres, mark(dres <= 5e-3));
-    println!("  time {:.2} ms (≤ 100 ms) {}   iterations {} flips {} converged {} reflex {}", ms, mark(ms <= 100.0), s.iterations, s.flips, s.converged, s.reflex_edges);
+    println!(
+        "  time {:.2} ms median of {reps} (min {:.2}) (≤ 100 ms) {}   iterations {} flips {} converged {} reflex {}",
+        ms, ms_min, mark(ms <= 100.0), s.iterations, s.flips, s.converged, s.reflex_edges
+    );
+    println!(
+        "  warm re-solve after a 1 %-of-perimeter slider step: {:.2} ms ({:.2}× the cold solve), volume vs cold {:.1e}, converged {}",
+        warm_ms, warm_ms / ms, warm_dv, warm.stats.converged
+    );
 }
 
 fn main() {

@@ -9,8 +9,9 @@
 //!   segments are normal input, and their neighbours become adjacent;
 //! - every remaining cubic is checked for a loop of its own (closed form, [`cubic_loop`]) and
 //!   for a straight segment that doubles back on itself;
-//! - pairs are found by a sweep over control-point bounding boxes (sorted by `min x`), so a
-//!   1,000-segment outline costs about `n log n` plus the pairs whose boxes really overlap;
+//! - candidate pairs come from a uniform grid of about one cell per segment over the
+//!   control-point bounding boxes, so a 1,000-segment outline costs about `n` plus the pairs
+//!   whose boxes really overlap;
 //! - each candidate pair goes to lyon_geom's Bézier clipping (`cubic_intersections_t`).
 //!   Adjacent segments meet at their shared anchor by construction: a pair whose control points
 //!   lie in disjoint angular cones around that anchor cannot meet anywhere else (convex-hull
@@ -91,24 +92,40 @@ pub fn find_self_intersection(contour: &Contour) -> Option<(usize, usize)> {
         }
     }
 
-    // Sweep over boxes sorted by min x.
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| segs[a].min.x.total_cmp(&segs[b].min.x));
-    let mut active: Vec<usize> = Vec::new();
-    for &k in &order {
-        let sk = &segs[k];
-        active.retain(|&a| segs[a].max.x + LINEAR >= sk.min.x);
-        for &a in &active {
-            let sa = &segs[a];
-            if sa.min.y > sk.max.y + LINEAR || sk.min.y > sa.max.y + LINEAR {
-                continue;
-            }
-            let (i, j) = (a.min(k), a.max(k));
-            if pair_intersects(&segs[i], &segs[j], j == i + 1, n > 1 && i == 0 && j == n - 1) {
-                found(segs[i].index, segs[j].index);
+    // Candidate pairs from a uniform grid over the unit box (about one segment per cell): a pair
+    // is tested once, in the first cell its two boxes share.
+    let g = ((n as f64).sqrt().ceil() as usize).clamp(1, 256);
+    let cell = |x: f64| (((x + 1.0) * 0.5 * g as f64).floor().max(0.0) as usize).min(g - 1);
+    let span = |s: &Seg| (cell(s.min.x - LINEAR), cell(s.max.x + LINEAR), cell(s.min.y - LINEAR), cell(s.max.y + LINEAR));
+    let spans: Vec<_> = segs.iter().map(span).collect();
+    let mut grid: Vec<Vec<usize>> = vec![Vec::new(); g * g];
+    for (k, &(x0, x1, y0, y1)) in spans.iter().enumerate() {
+        for cy in y0..=y1 {
+            for cx in x0..=x1 {
+                if let Some(c) = grid.get_mut(cy * g + cx) {
+                    c.push(k);
+                }
             }
         }
-        active.push(k);
+    }
+    for (ci, members) in grid.iter().enumerate() {
+        let (cx, cy) = (ci % g, ci / g);
+        for (m, &i) in members.iter().enumerate() {
+            for &j in members.iter().skip(m + 1) {
+                let (Some(si), Some(sj)) = (spans.get(i), spans.get(j)) else { continue };
+                if cx != si.0.max(sj.0) || cy != si.2.max(sj.2) {
+                    continue; // tested in an earlier shared cell
+                }
+                let (a, b) = (&segs[i.min(j)], &segs[i.max(j)]);
+                if a.min.x > b.max.x + LINEAR || b.min.x > a.max.x + LINEAR || a.min.y > b.max.y + LINEAR || b.min.y > a.max.y + LINEAR {
+                    continue;
+                }
+                let (i, j) = (i.min(j), i.max(j));
+                if pair_intersects(a, b, j == i + 1, n > 1 && i == 0 && j == n - 1) {
+                    found(a.index, b.index);
+                }
+            }
+        }
     }
     best
 }
@@ -239,6 +256,18 @@ fn line_dist(p: Point, a: Point, u: Vec2) -> f64 {
 
 /// Unit direction of a straight cubic, if all four control points lie on one line.
 fn straight(c: &CubicBez) -> Option<(Point, Vec2)> {
+    // Quick rejection (the common case): a handle clearly off the chord. Valid when the handles
+    // are no farther from p0 than p3 is: then the chord is within 2·LINEAR/len of any line
+    // that all points are within LINEAR of, so a straight cubic stays within 3·LINEAR of it.
+    let v = c.p3 - c.p0;
+    let len2 = v.hypot2();
+    if len2 > 0.0
+        && (c.p1 - c.p0).hypot2() <= len2
+        && (c.p2 - c.p0).hypot2() <= len2
+        && [c.p1, c.p2].iter().any(|&p| v.cross(p - c.p0).abs() > 4.0 * LINEAR * len2.sqrt())
+    {
+        return None;
+    }
     let pts = [c.p0, c.p1, c.p2, c.p3];
     // Direction from the two farthest-apart control points.
     let mut far = (0.0, c.p0, c.p3);

@@ -96,7 +96,10 @@ pub fn bench_perimeter(path: JsValue, accuracy: Option<f64>, repeats: u32) -> Re
 /// `connect(pieces, options)` → `{ count, pitch, pieces: [PieceResult, PieceResult], warnings }`.
 #[wasm_bindgen]
 pub fn connect(pieces: JsValue, options: JsValue) -> Result<JsValue, JsError> {
-    let pieces: Vec<api::path::PathDto> = from_js(pieces, "pieces")?;
+    let pieces: Vec<api::path::PathDto> = match api::connect::js::pieces_from_js(&pieces) {
+        Some(p) => p,
+        None => from_js(pieces, "pieces")?,
+    };
     let options: api::connect::ConnectOptionsDto =
         if options.is_undefined() || options.is_null() { Default::default() } else { from_js(options, "options")? };
     let result = api::connect::connect(&pieces, &options).map_err(js_error)?;

@@ -110,8 +110,8 @@ test('open SVG files with transforms and viewBox units: perimeters read in mm', 
 test('a file that is not SVG: its name and the parser message, nothing loaded', async () => {
   const { page } = await openApp();
   await page.setInputFiles('#open-input', [{ name: 'broken.svg', mimeType: 'image/svg+xml', buffer: Buffer.from('<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0"</svg>') }]);
-  await page.waitForFunction(() => /broken\.svg/.test(document.querySelector('#message').textContent));
-  assert.match(await page.textContent('#message'), /broken\.svg is not well-formed SVG/);
+  await page.waitForFunction(() => /broken\.svg/.test(document.querySelector('#status').textContent));
+  assert.match(await page.textContent('#status'), /broken\.svg is not well-formed SVG/);
   await page.close();
 });
 
@@ -129,6 +129,27 @@ test('the built browser app works opened from disk (file://: WASM inlined, no fe
   await page.selectOption('#sample-select', 'ellipse-circle');
   await waitReady(page);
   assert.match(await page.textContent('#stats'), /^24 connectors/, await page.textContent('#message'));
+  if (await page.evaluate(() => window.DF.core.has('simulate'))) {
+    // Chrome starts no worker from file://: the solver falls back to the page's own thread.
+    await page.click('.tabs button[data-view="3d"]');
+    await page.waitForFunction(() => document.body.dataset.solve);
+    assert.equal(await page.evaluate(() => document.body.dataset.solve), 'ok', await page.textContent('#stats3d'));
+  }
   assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('spacing by pitch: the count follows and the adjusted pitch divides the perimeter', async () => {
+  const { page } = await openApp();
+  await page.selectOption('#sample-select', 'ellipse-circle');
+  await waitReady(page);
+  await page.selectOption('#spacing', 'pitch');
+  await page.fill('#pitch', '20');
+  await page.waitForFunction(() => /pitch 2\d\.\d\d mm|pitch 1\d\.\d\d mm/.test(document.querySelector('#stats').textContent));
+  const stats = await page.textContent('#stats');
+  const [, n, pitch, perimeter] = /^(\d+) connectors · pitch ([\d.]+) mm · perimeter ([\d.]+) mm/.exec(stats).map(Number);
+  assert.ok(Math.abs(n * pitch - perimeter) <= 0.005 * n + 0.01, `${n} × ${pitch} should be the perimeter ${perimeter}`);
+  assert.ok(Math.abs(pitch - 20) <= 20 / (n - 1), `pitch ${pitch} should be the nearest divisor to the requested 20 mm (count ${n})`);
+  assert.equal(await page.$$eval('#preview .hole', (h) => h.length), 2 * n, 'holes drawn on both pieces');
   await page.close();
 });

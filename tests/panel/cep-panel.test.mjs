@@ -62,7 +62,8 @@ test('select two shapes, normalize, add stitching, apply: equal perimeters and p
 
   await page.click('#apply-btn');
   await page.waitForFunction(() => document.body.dataset.applied);
-  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', `apply failed: ${await page.textContent('#message')}`);
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', `apply failed: ${await page.textContent('#status')}`);
+  assert.match(await page.textContent('#status'), /Updated 2 path\(s\), created \d+ item\(s\)/);
 
   const after = items(host.snapshot()[0]);
   const [a1, b1] = ['Ellipse', 'Circle'].map((n) => after.find((i) => i.name === n && i.typename === 'PathItem'));
@@ -125,7 +126,7 @@ test('Illustrator refuses the write (layer locked after reading): message shown,
   await page.click('#apply-btn');
   await page.waitForFunction(() => document.body.dataset.applied);
   assert.equal(await page.evaluate(() => document.body.dataset.applied), 'error');
-  const message = await page.textContent('#message');
+  const message = await page.textContent('#status');
   assert.match(message, /lock/i, `wanted the bridge's "locked" message, got "${message}"`);
   assert.equal(JSON.stringify(host.snapshot()), snap, 'the document must be unchanged');
   await page.close();
@@ -163,7 +164,7 @@ test('"start at the selected anchor": connector 1 sits at the anchor picked with
   await page.waitForFunction(() => /^12 connectors/.test(document.querySelector('#stats').textContent));
   await page.click('#apply-btn');
   await page.waitForFunction(() => document.body.dataset.applied);
-  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#message'));
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#status'));
   const all = items(host.snapshot()[0]);
   const square = all.find((i) => i.name === 'Square' && i.typename === 'PathItem');
   const disc = all.find((i) => i.name === 'Disc' && i.typename === 'PathItem');
@@ -192,7 +193,7 @@ test('layer colours and hairline widths are configurable, used by Apply and reme
   await page.fill('.layer-row[data-layer="cut"] .layer-width', '0.1'); // mm
   await page.click('#apply-btn');
   await page.waitForFunction(() => document.body.dataset.applied);
-  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#message'));
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#status'));
   const holes = items(host.snapshot()[0]).filter((i) => /^hole \d+$/.test(i.name));
   assert.ok(holes.length > 0);
   for (const h of holes) {
@@ -215,7 +216,7 @@ test('teeth: each piece gets its toothed cut outline on the Cut layer; the norma
   await page.waitForFunction(() => /^16 connectors/.test(document.querySelector('#stats').textContent));
   await page.click('#apply-btn');
   await page.waitForFunction(() => document.body.dataset.applied);
-  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#message'));
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#status'));
   const all = items(host.snapshot()[0]);
   const outlines = ['A', 'B'].map((k) => all.find((i) => i.group === `D-former piece ${k} connectors` && i.name === 'outline'));
   assert.ok(outlines.every(Boolean), 'an outline per piece');

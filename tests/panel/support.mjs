@@ -50,7 +50,7 @@ export function artifactPath(name) {
 export async function waitReady(page, what = 'ready') {
   await page.waitForFunction(() => document.body.dataset.core === 'loaded' || document.body.dataset.core === 'error', null, { timeout: 20000 });
   const core = await page.evaluate(() => document.body.dataset.core);
-  if (core !== 'loaded') throw new Error(`core failed to load: ${await page.textContent('#message')}`);
+  if (core !== 'loaded') throw new Error(`core failed to load: ${await page.textContent('#status')}`);
   if (what === 'ready') {
     await page.waitForFunction(() => document.body.dataset.state === 'ready' || (document.body.dataset.state === 'error' && document.querySelector('#message').textContent), null, { timeout: 20000 });
   }

@@ -58,6 +58,7 @@ test('browser app: 3D form of two crossed ellipses — figures match the exporte
   await page.click('.tabs button[data-view="3d"]');
   await page.waitForFunction(() => document.body.dataset.solve);
   assert.equal(await page.evaluate(() => document.body.dataset.solve), 'ok', await page.textContent('#stats3d'));
+  assert.equal(await page.evaluate(() => window.DF.solver.threaded()), true, 'served over http, the solver runs on a worker thread');
   const stats = await page.textContent('#stats3d');
   const m = /Volume ([\d,.]+) mm³ \(([\d,.]+) L\) · area ([\d,.]+) mm²/.exec(stats);
   assert.ok(m, `stats line: ${stats}`);

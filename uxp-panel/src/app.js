@@ -29,6 +29,8 @@
   var mesh = null; // last simulate() result and the pieces it was solved for (warm start)
   var meshKey = '';
   var meshOffset = 0;
+  var solving = false;
+  var solveAgain = false;
 
   /** Length fields: where each value (points) lives. */
   var LEN = {
@@ -49,10 +51,12 @@
     return DF.units.format(points, unit);
   }
   function lenText(points) {
-    var d = DF.units.DECIMALS[unit] + (Math.abs(DF.units.toUnits(points, unit)) < 1 && points !== 0 ? 1 : 0);
+    // About 0.01 mm everywhere; one more decimal for sub-unit values in the coarse-grained units.
+    var d = DF.units.DECIMALS[unit] + (DF.units.DECIMALS[unit] === 2 && Math.abs(DF.units.toUnits(points, unit)) < 1 && points !== 0 ? 1 : 0);
     return String(parseFloat(DF.units.toUnits(points, unit).toFixed(d)));
   }
   function save() {
+    if (document.getElementById('status')) document.getElementById('status').textContent = '';
     settings.params = params;
     DF.settings.save(settings);
   }
@@ -196,6 +200,7 @@
   }
 
   function changed() {
+    setStatus('', true);
     save();
     syncControls();
     recompute();
@@ -333,9 +338,17 @@
     $('#export-obj').disabled = $('#export-stl').disabled = !ok;
     document.body.dataset.solve = ok ? 'ok' : 'error';
   }
-  /** Solves the 3D form for the current design; warm-started from the last solution of the same pieces. */
+  /**
+   * Solves the 3D form for the current design (on the solver thread when possible). Requests made
+   * while a solve runs are coalesced: when it finishes, the latest design is solved, warm-started
+   * from the last solution of the same pieces when the offset moved only a little.
+   */
   function solve3d() {
     if (!viewer) viewer = DF.view3d.create($('#view3d'));
+    if (solving) {
+      solveAgain = true;
+      return;
+    }
     if (!DF.core.has('simulate')) {
       viewer.setMesh(null);
       return set3dMessage('This build of the geometry core has no simulate(): rebuild it to see the 3D form.', false);
@@ -344,28 +357,38 @@
       viewer.setMesh(null);
       return set3dMessage(design && design.error ? design.error : 'Select two closed paths.', false);
     }
-    var pieces = design.pieces.map(function (p) { return p.path; });
+    var d = design;
+    var pieces = d.pieces.map(function (p) { return p.path; });
     var key = JSON.stringify(pieces);
-    var options = { offset: design.offset };
+    var options = { offset: d.offset };
     // Warm start only for small steps (a slider drag); a far-away shape is a worse start than none.
-    var step = mesh ? Math.abs(design.offset - meshOffset) : Infinity;
-    step = Math.min(step, design.perimeter - step);
-    if (mesh && meshKey === key && step <= 0.05 * design.perimeter) options.warm = mesh.vertices;
-    $('#offset3d').value = String(Math.round((design.offset / design.perimeter) * 1000));
-    $('#offset3d-out').textContent = fmt(design.offset);
-    try {
-      mesh = DF.core.simulate(pieces, options);
+    var step = mesh ? Math.abs(d.offset - meshOffset) : Infinity;
+    step = Math.min(step, d.perimeter - step);
+    if (mesh && meshKey === key && step <= 0.05 * d.perimeter) options.warm = mesh.vertices;
+    $('#offset3d').value = String(Math.round((d.offset / d.perimeter) * 1000));
+    $('#offset3d-out').textContent = fmt(d.offset);
+    solving = true;
+    document.body.dataset.solving = 'yes';
+    DF.solver.solve(pieces, options).then(function (result) {
+      mesh = result;
       meshKey = key;
-      meshOffset = design.offset;
-    } catch (e) {
+      meshOffset = d.offset;
+      viewer.setMesh(mesh);
+      var st = mesh.stats;
+      set3dMessage(volumeText(st.volume) + ' · ' + areaText(st.area) + ' · strain ' + (st.maxStrain * 100).toFixed(2) + ' %' +
+        (st.converged ? '' : ' · not converged'), true);
+    }, function (e) {
       mesh = null;
       viewer.setMesh(null);
-      return set3dMessage(e.message, false);
-    }
-    viewer.setMesh(mesh);
-    var st = mesh.stats;
-    set3dMessage(volumeText(st.volume) + ' · ' + areaText(st.area) + ' · strain ' + (st.maxStrain * 100).toFixed(2) + ' %' +
-      (st.converged ? '' : ' · not converged'), true);
+      set3dMessage(e.message, false);
+    }).then(function () {
+      solving = false;
+      document.body.dataset.solving = '';
+      if (solveAgain && view === '3d') {
+        solveAgain = false;
+        solve3d();
+      }
+    });
   }
   function showView(which) {
     view = which;
@@ -401,17 +424,18 @@
     });
   }
   function report3d(r) {
-    if (r && r.message) {
-      var msg = $('#message');
-      msg.className = 'message success';
-      msg.textContent = r.message;
-    }
+    if (r && r.message) setStatus(r.message, true);
+  }
+
+  /** The outcome of Apply / exports: stays until the next change the user makes. */
+  function setStatus(text, ok) {
+    var el = $('#status');
+    el.className = 'message ' + (ok ? 'success' : 'error');
+    el.textContent = text || '';
   }
 
   function showError(e) {
-    var msg = $('#message');
-    msg.className = 'message error';
-    msg.textContent = e && e.message ? e.message : String(e);
+    setStatus(e && e.message ? e.message : String(e), false);
   }
 
   function apply() {
@@ -427,14 +451,12 @@
     var plan = DF.design.plan(fresh, params, settings, selection.document);
     return host.apply(plan).then(function (r) {
       applying = false;
-      var msg = $('#message');
-      msg.className = 'message ' + (r.ok ? 'success' : 'error');
-      msg.textContent = r.ok ? r.message : r.error;
+      setStatus(r.ok ? r.message : r.error, r.ok);
       $('#apply-btn').disabled = false;
       document.body.dataset.applied = r.ok ? 'ok' : 'error';
     }, function (e) {
       applying = false;
-      showError(e);
+      setStatus(e && e.message ? e.message : String(e), false);
       $('#apply-btn').disabled = false;
       document.body.dataset.applied = 'error';
     });
@@ -460,6 +482,13 @@
     syncControls();
     DF.core.load().then(function () {
       return host.start({ selection: onSelection, theme: applyTheme });
+    }).then(function () {
+      // The browser app opens on the first sample, so there is something to look at right away.
+      if (host.kind === 'browser' && !selection.pieces.length && DF.samples.length) {
+        $('#sample-select').value = DF.samples[0].id;
+        return host.useSample(DF.samples[0].id);
+      }
+      return null;
     }).then(function () {
       document.body.dataset.core = 'loaded';
     }, function (e) {

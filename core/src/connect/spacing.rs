@@ -8,8 +8,8 @@
 //! iteration on `f(t) = ∫_{t_prev}^{t} |B'(τ)| dτ − Δs` (with `f'(t) = |B'(t)|`) converges in
 //! two or three steps (quadratic convergence; bisection takes over where `|B'|` vanishes).
 
-use crate::arclen::{control_polygon_len, unit_tangent, ArcTable};
-use kurbo::{CubicBez, ParamCurve, ParamCurveArclen, ParamCurveDeriv, Point, Vec2};
+use crate::arclen::{control_polygon_len, segment_len, unit_tangent, ArcTable};
+use kurbo::{CubicBez, ParamCurve, ParamCurveDeriv, Point, Vec2};
 
 /// A located position on the outline.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -62,6 +62,15 @@ pub fn locate_many(table: &ArcTable, targets: &[f64]) -> Vec<Station> {
     out
 }
 
+/// Arc length of a stretch of a segment to the absolute accuracy `abs`: the crate's
+/// [`segment_len`] (kurbo's adaptive Gauss–Legendre rules and error estimate, with plain square
+/// roots instead of libm's costly `hypot` in WASM), whose relative accuracy is per unit of the
+/// stretch's control-polygon length, hence `abs / polygon`.
+fn stretch_len(q: &CubicBez, abs: f64) -> f64 {
+    let poly = control_polygon_len(q);
+    if poly == 0.0 { 0.0 } else { segment_len(q, abs / poly) }
+}
+
 /// Finds `t ≥ t_ref` on `c` with arc length `target` from `t = 0`, given that the arc length to
 /// `t_ref` is `a_ref` and the whole segment measures `seg_len`. Returns `t` and the arc length to
 /// it as accumulated by the quadratures (so the next solve carries no error forward).
@@ -86,9 +95,9 @@ fn solve(c: &CubicBez, t_ref: f64, a_ref: f64, target: f64, seg_len: f64, accura
     }
     for _ in 0..100 {
         let piece = if next >= t {
-            c.subsegment(t..next).arclen(piece_acc)
+            stretch_len(&c.subsegment(t..next), piece_acc)
         } else {
-            -c.subsegment(next..t).arclen(piece_acc)
+            -stretch_len(&c.subsegment(next..t), piece_acc)
         };
         a += piece;
         t = next;
@@ -117,6 +126,7 @@ fn solve(c: &CubicBez, t_ref: f64, a_ref: f64, target: f64, seg_len: f64, accura
 mod tests {
     use super::*;
     use crate::arclen::DEFAULT_ACCURACY;
+    use kurbo::ParamCurveArclen;
     use crate::contour::{Contour, Knot};
 
     /// A circle of radius 10 from four cubics (not a true circle: exact lengths come from the

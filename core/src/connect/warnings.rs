@@ -2,7 +2,7 @@
 //! leaves run into each other. Connectors are named by their label numbers (connector k is
 //! labelled k + 1), so the user can find them on the drawing.
 
-use kurbo::{BezPath, CubicBez, ParamCurve, ParamCurveExtrema, ParamCurveNearest, Point, Rect, Shape};
+use kurbo::{CubicBez, ParamCurve, ParamCurveExtrema, ParamCurveNearest, PathEl, Point, Rect, Shape, Vec2};
 
 /// At most this many connectors are listed in one warning; the rest are counted.
 const MAX_LISTED: usize = 30;
@@ -79,39 +79,71 @@ impl Edge {
         Some(((mx(a, 0.0)) as usize, (b as usize).min(n - 1)))
     }
 
-    /// Distance from `p` to the outline if it is below `limit`, else `None`. Only segments
-    /// whose bounding box comes within `limit` are measured exactly (kurbo's `nearest`
-    /// minimises |B(t) − p|² through the roots of its degree-5 derivative).
-    pub fn distance_below(&self, p: Point, limit: f64) -> Option<f64> {
-        let cols = self.cell_range(p.x - limit, p.x + limit, self.origin.x, self.cols)?;
-        let rows = self.cell_range(p.y - limit, p.y + limit, self.origin.y, self.rows)?;
-        let mut seen: Vec<u32> = Vec::new();
+    /// Indices of the segments bucketed in the cells that the square `p ± limit` touches, in
+    /// `out` (cleared first; a segment spanning several cells is listed once per cell).
+    fn near(&self, p: Point, limit: f64, out: &mut Vec<u32>) {
+        out.clear();
+        let (Some(cols), Some(rows)) = (
+            self.cell_range(p.x - limit, p.x + limit, self.origin.x, self.cols),
+            self.cell_range(p.y - limit, p.y + limit, self.origin.y, self.rows),
+        ) else {
+            return;
+        };
         for r in rows.0..=rows.1 {
             for c in cols.0..=cols.1 {
-                seen.extend_from_slice(&self.grid[r * self.cols + c]);
+                out.extend_from_slice(&self.grid[r * self.cols + c]);
             }
         }
-        seen.sort_unstable();
-        seen.dedup();
+    }
+
+    /// Distance from `p` to the outline if it is below `limit`, else `None`. Only segments
+    /// that might come within `limit` are measured exactly (kurbo's `nearest` minimises
+    /// |B(t) − p|² through the roots of its degree-5 derivative).
+    pub fn distance_below(&self, p: Point, limit: f64) -> Option<f64> {
+        let mut ids = Vec::new();
+        self.near(p, limit, &mut ids);
+        ids.sort_unstable();
+        ids.dedup();
         let mut best: Option<f64> = None;
-        for i in seen {
-            let (c, b) = (&self.segs[i as usize], &self.boxes[i as usize]);
-            let dx = mx(mx(b.x0 - p.x, p.x - b.x1), 0.0);
-            let dy = mx(mx(b.y0 - p.y, p.y - b.y1), 0.0);
-            if dx * dx + dy * dy >= limit * limit {
-                continue;
-            }
-            let d = c.nearest(p, 1e-12 * limit).distance_sq.sqrt();
-            if d < limit && best.is_none_or(|b| d < b) {
-                best = Some(d);
+        for i in ids {
+            if let Some(d) = self.segment_distance_below(i as usize, p, limit) {
+                if best.is_none_or(|b| d < b) {
+                    best = Some(d);
+                }
             }
         }
         best
     }
 
+    /// Whether the outline comes closer than `limit` to `p`: the same answer as
+    /// `distance_below(p, limit).is_some()`, stopping at the first segment that does.
+    /// `scratch` is reused between calls to save an allocation per query.
+    pub fn comes_within(&self, p: Point, limit: f64, scratch: &mut Vec<u32>) -> bool {
+        self.near(p, limit, scratch);
+        scratch.iter().any(|&i| self.segment_distance_below(i as usize, p, limit).is_some())
+    }
+
+    /// Exact distance from `p` to segment `i` when it is below `limit`. The exact (and costly)
+    /// nearest-point search runs only when two cheap lower bounds on the distance, the
+    /// segment's tight axis-aligned box and [`hull_distance_sq`], are both below `limit`.
+    fn segment_distance_below(&self, i: usize, p: Point, limit: f64) -> Option<f64> {
+        let (c, b) = (&self.segs[i], &self.boxes[i]);
+        let dx = mx(mx(b.x0 - p.x, p.x - b.x1), 0.0);
+        let dy = mx(mx(b.y0 - p.y, p.y - b.y1), 0.0);
+        if dx * dx + dy * dy >= limit * limit || hull_distance_sq(c, p) >= limit * limit {
+            return None;
+        }
+        let d = c.nearest(p, 1e-12 * limit).distance_sq.sqrt();
+        (d < limit).then_some(d)
+    }
+
     /// Whether `p` is enclosed (non-zero winding). Only segments whose box reaches the
     /// horizontal ray to the left of `p` can contribute, so only those (from `p`'s band) are
-    /// handed to kurbo's winding count.
+    /// counted. kurbo's winding count cuts a cubic into pieces monotone in x and y, and a piece
+    /// whose ray crossing lies left of `p` adds `[start.y > p.y] − [end.y > p.y]` (its crossing
+    /// sign, half-open in y). For a segment lying wholly to the left of `p` that holds for every
+    /// piece, and the sum telescopes to the same expression for the segment's own ends, so only
+    /// segments whose box straddles `p.x` go to kurbo (the same count, without solving cubics).
     pub fn contains(&self, p: Point) -> bool {
         let Some((r, _)) = self.cell_range(p.y, p.y, self.origin.y, self.rows) else {
             return false;
@@ -119,16 +151,50 @@ impl Edge {
         if p.y > self.origin.y + self.cell * self.rows as f64 {
             return false;
         }
-        let mut path = BezPath::new();
+        let above = |y: f64| (y > p.y) as i32;
+        let mut winding = 0;
         for &i in &self.bands[r] {
             let (c, b) = (&self.segs[i as usize], &self.boxes[i as usize]);
-            if b.y0 <= p.y && p.y <= b.y1 && b.x0 <= p.x {
-                path.move_to(c.p0);
-                path.curve_to(c.p1, c.p2, c.p3);
+            if !(b.y0 <= p.y && p.y <= b.y1 && b.x0 <= p.x) {
+                continue;
+            }
+            // Margin for the rounding of points evaluated on the curve (a few ulps of the box).
+            let slack = 1e-12 * (b.x1.abs() + b.x0.abs() + (b.y1 - b.y0));
+            if b.x1 + slack < p.x {
+                winding += above(c.p0.y) - above(c.p3.y);
+            } else {
+                let els = [PathEl::MoveTo(c.p0), PathEl::CurveTo(c.p1, c.p2, c.p3)];
+                winding += (&els[..]).winding(p);
             }
         }
-        path.winding(p) != 0
+        winding != 0
     }
+}
+
+/// A lower bound on the squared distance from `p` to the cubic `c`: the squared distance to
+/// the box around its control points aligned with its chord (the curve lies in the convex hull
+/// of its control points, which lies in that box). Shrunk by a relative 1e-12 of the
+/// coordinates so that rounding never makes it exceed the true distance. Returns 0 for a
+/// (nearly) zero chord.
+fn hull_distance_sq(c: &CubicBez, p: Point) -> f64 {
+    let chord = c.p3 - c.p0;
+    let len = chord.hypot();
+    let scale = c.p0.x.abs() + c.p0.y.abs() + p.x.abs() + p.y.abs() + len;
+    if !(len > 1e-9 * scale) {
+        return 0.0;
+    }
+    let u = chord / len;
+    let (q1, q2, q3, qp) = (c.p1 - c.p0, c.p2 - c.p0, c.p3 - c.p0, p - c.p0);
+    let along = |v: Vec2| v.dot(u);
+    let across = |v: Vec2| u.cross(v);
+    let gap = |x: f64, a: [f64; 4]| {
+        let lo = a.iter().fold(f64::INFINITY, |m, &v| if v < m { v } else { m });
+        let hi = a.iter().fold(f64::NEG_INFINITY, |m, &v| if v > m { v } else { m });
+        mx(mx(lo - x, x - hi) - 1e-12 * scale, 0.0)
+    };
+    let ga = gap(along(qp), [0.0, along(q1), along(q2), along(q3)]);
+    let gc = gap(across(qp), [0.0, across(q1), across(q2), across(q3)]);
+    ga * ga + gc * gc
 }
 
 /// Warnings about holes on one piece: pairs that overlap, holes that cross the cut edge, holes on
@@ -161,8 +227,9 @@ pub fn holes(piece: &str, centers: &[Point], radius: f64, edge: &Edge, inside: b
     }
     let mut crossing = Vec::new();
     let mut wrong_side = Vec::new();
+    let mut scratch = Vec::new();
     for (k, &c) in centers.iter().enumerate() {
-        if edge.distance_below(c, radius).is_some() {
+        if edge.comes_within(c, radius, &mut scratch) {
             crossing.push((k + 1).to_string());
         } else if edge.contains(c) != inside {
             wrong_side.push((k + 1).to_string());
@@ -246,5 +313,56 @@ mod tests {
         let segs = [l((0.0, 0.0), (2.0, 2.0)), l((2.0, 2.0), (2.0, 0.0)), l((2.0, 0.0), (0.0, 2.0)), l((0.0, 2.0), (0.0, 0.0))];
         let got = collisions(&segs, &[0, 1, 2, 3], 1);
         assert_eq!(got, vec![(0, 2)], "wanted the two diagonals (0, 2), got {got:?}");
+    }
+
+    /// A wavy closed outline of `n` smooth cubics (Catmull–Rom handles) with concave stretches,
+    /// so that holes near it see both bulging and hollow segments.
+    fn wavy(n: usize) -> Vec<CubicBez> {
+        let pt = |i: usize| {
+            let a = std::f64::consts::TAU * i as f64 / n as f64;
+            let r = 10.0 + 2.5 * (5.0 * a).sin();
+            Point::new(r * a.cos(), r * a.sin())
+        };
+        (0..n)
+            .map(|i| {
+                let (o, p, q, r) = (pt(i + n - 1), pt(i), pt(i + 1), pt(i + 2));
+                CubicBez::new(p, p + (q - o) / 6.0, q - (r - p) / 6.0, q)
+            })
+            .collect()
+    }
+
+    /// Regression guard for the cheap bounds in front of the exact nearest-point search and for
+    /// the shortcut in the winding count: on a grid of points around a wavy outline, the fast
+    /// queries must agree with a brute force over every segment (kurbo's `nearest` and kurbo's
+    /// winding of the whole path).
+    #[test]
+    fn fast_edge_queries_agree_with_brute_force() {
+        let segs = wavy(40);
+        let mut path = kurbo::BezPath::new();
+        path.move_to(segs[0].p0);
+        for c in &segs {
+            path.curve_to(c.p1, c.p2, c.p3);
+        }
+        path.close_path();
+        let edge = Edge::new(segs.clone());
+        let mut scratch = Vec::new();
+        let mut near_count = 0;
+        for i in 0..=120 {
+            for j in 0..=120 {
+                let p = Point::new(-14.0 + 28.0 * i as f64 / 120.0, -14.0 + 28.0 * j as f64 / 120.0);
+                for limit in [0.05, 0.4, 2.0] {
+                    let exact = segs.iter().map(|c| c.nearest(p, 1e-12 * limit).distance_sq.sqrt()).fold(f64::INFINITY, f64::min);
+                    let want = exact < limit;
+                    near_count += want as usize;
+                    let got = edge.comes_within(p, limit, &mut scratch);
+                    assert_eq!(got, want, "point {p:?}, limit {limit}: exact distance {exact}, wanted within = {want}, got {got}");
+                    let below = edge.distance_below(p, limit);
+                    assert_eq!(below.is_some(), want, "distance_below at {p:?}, limit {limit}: exact {exact}, got {below:?}");
+                }
+                let (want, got) = (path.winding(p) != 0, edge.contains(p));
+                assert_eq!(got, want, "point {p:?}: wanted inside = {want}, got {got}");
+            }
+        }
+        assert!(near_count > 1000, "the grid should put many points near the edge, got {near_count}");
     }
 }

@@ -5,9 +5,7 @@ use super::metric::{self, Triangulation};
 use super::options::SimulateOptions;
 use super::seam::SeamPieces;
 use crate::error::{Error, Result};
-use faer::linalg::solvers::Solve;
-use faer::sparse::{SparseColMat, Triplet};
-use faer::{Mat, Side};
+use super::normal::NormalEquations;
 use std::collections::HashMap;
 use super::seam::Glue;
 
@@ -232,13 +230,11 @@ fn resample(w: &[V3], n: usize) -> Vec<V3> {
         .collect()
 }
 
-/// Solves one damped Gauss–Newton step `(JᵀJ + λ·μ I) Δ = −Jᵀr`; `None` if the factorization
-/// fails (then the caller raises λ).
-fn step(x: &[V3], bars: &[Bar], lambda: f64) -> Option<Vec<f64>> {
-    let n3 = 3 * x.len();
-    let mut trip: Vec<Triplet<usize, usize, f64>> = Vec::with_capacity(bars.len() * 21 + n3);
-    let mut g = vec![0.0; n3];
-    let mut diag = vec![0.0; n3];
+/// Solves one damped Gauss–Newton step `(JᵀJ + λ·μ I) Δ = −Jᵀr` with the normal equations
+/// pattern of `bars`; `None` if the factorization fails (then the caller raises λ).
+fn step(x: &[V3], bars: &[Bar], lambda: f64, ne: &mut NormalEquations) -> Option<Vec<f64>> {
+    let mut g = vec![0.0; 3 * x.len()];
+    let mut blocks = Vec::with_capacity(bars.len());
     for b in bars {
         let e = sub(x[b.j], x[b.i]);
         let l = norm(e);
@@ -248,33 +244,16 @@ fn step(x: &[V3], bars: &[Bar], lambda: f64) -> Option<Vec<f64>> {
         for a in 0..3 {
             g[3 * b.j + a] += u[a] * r / b.d;
             g[3 * b.i + a] -= u[a] * r / b.d;
-            diag[3 * b.i + a] += w * u[a] * u[a];
-            diag[3 * b.j + a] += w * u[a] * u[a];
         }
-        let (lo, hi) = (b.i.min(b.j), b.i.max(b.j));
-        for a in 0..3 {
-            for c in 0..3 {
-                let v = w * u[a] * u[c];
-                // Diagonal blocks: lower triangle only (the diagonal itself comes from `diag`).
-                if a > c {
-                    trip.push(Triplet::new(3 * b.i + a, 3 * b.i + c, v));
-                    trip.push(Triplet::new(3 * b.j + a, 3 * b.j + c, v));
-                }
-                // Off-diagonal block, rows of the larger vertex.
-                trip.push(Triplet::new(3 * hi + a, 3 * lo + c, -v));
-            }
-        }
+        blocks.push([0, 1, 2].map(|a| [0, 1, 2].map(|c| w * u[a] * u[c])));
     }
-    let mu = diag.iter().sum::<f64>() / n3 as f64;
-    for (k, d) in diag.iter().enumerate() {
-        trip.push(Triplet::new(k, k, d + lambda * mu));
-    }
-    let h = SparseColMat::<usize, f64>::try_new_from_triplets(n3, n3, &trip).ok()?;
-    let llt = h.sp_cholesky(Side::Lower).ok()?;
-    let mut rhs = Mat::<f64>::from_fn(n3, 1, |k, _| -g[k]);
-    llt.solve_in_place(rhs.as_mut());
-    let d: Vec<f64> = (0..n3).map(|k| rhs[(k, 0)]).collect();
-    d.iter().all(|v| v.is_finite()).then_some(d)
+    ne.solve(&blocks, &g, lambda)
+}
+
+/// The sparse pattern of the normal equations of `bars` on `n` vertices.
+fn pattern(n: usize, bars: &[Bar]) -> NormalEquations {
+    let pairs: Vec<(usize, usize)> = bars.iter().map(|b| (b.i, b.j)).collect();
+    NormalEquations::new(n, &pairs)
 }
 
 /// Coarsest level of the multilevel start: below this the seam chords of A and B differ too
@@ -355,13 +334,14 @@ fn relax(pieces: &SeamPieces, x: &mut Vec<V3>, tri: &mut [Triangulation; 2], bud
     }
     let scale = size(x).max(f64::MIN_POSITIVE);
     let mut bars = bars(pieces, tri);
+    let mut ne = pattern(n, &bars);
     let mut c = cost(x, &bars);
     let mut lambda = 1e-4;
     let mut iterations = 0;
     let mut converged = false;
     while iterations < budget {
         iterations += 1;
-        let Some(d) = step(x, &bars, lambda) else {
+        let Some(d) = step(x, &bars, lambda, &mut ne) else {
             lambda *= 10.0;
             if lambda > 1e12 {
                 break;
@@ -391,6 +371,7 @@ fn relax(pieces: &SeamPieces, x: &mut Vec<V3>, tri: &mut [Triangulation; 2], bud
         flips += f;
         if f > 0 {
             bars = self::bars(pieces, tri);
+            ne = pattern(n, &bars);
             c = cost(x, &bars);
             lambda = 1e-4;
             continue;

@@ -1,0 +1,63 @@
+/* D-former panel: `simulate` on a worker thread when the page may start one (http, CEP), else on
+ * the UI thread (a page opened from file:// in Chrome may not start workers). Host-agnostic.
+ * solve(pieces, options) → Promise<result>; one job at a time, the caller coalesces requests. */
+(function (DF) {
+  'use strict';
+  var worker = null;
+  var failed = false;
+  var nextId = 1;
+  var waiting = {};
+
+  function start() {
+    if (worker || failed || typeof Worker !== 'function') return worker;
+    try {
+      worker = new Worker('src/solver-worker.js');
+    } catch (e) {
+      void e;
+      failed = true;
+      return null;
+    }
+    worker.onmessage = function (e) {
+      var job = waiting[e.data.id];
+      delete waiting[e.data.id];
+      if (!job) return;
+      if (e.data.ok) job.resolve(e.data.result);
+      else job.reject(new Error(e.data.error));
+    };
+    worker.onerror = function (e) {
+      // The worker could not load (e.g. file:// security): finish pending jobs on this thread.
+      e.preventDefault();
+      failed = true;
+      worker = null;
+      Object.keys(waiting).forEach(function (id) {
+        var job = waiting[id];
+        delete waiting[id];
+        runHere(job.pieces, job.options).then(job.resolve, job.reject);
+      });
+    };
+    return worker;
+  }
+
+  function runHere(pieces, options) {
+    return new Promise(function (resolve) {
+      resolve(DF.core.simulate(pieces, options));
+    });
+  }
+
+  function solve(pieces, options) {
+    var w = start();
+    if (!w) return runHere(pieces, options);
+    return new Promise(function (resolve, reject) {
+      var id = nextId++;
+      waiting[id] = { resolve: resolve, reject: reject, pieces: pieces, options: options };
+      w.postMessage({ id: id, pieces: pieces, options: options });
+    });
+  }
+
+  DF.solver = {
+    solve: solve,
+    threaded: function () {
+      return !!worker && !failed;
+    },
+  };
+})(window.DF = window.DF || {});
