@@ -294,8 +294,15 @@ fn arc_to(b: &mut Builder, from: Point, to: Point, radii: Vec2, rot_deg: f64, la
     if from == to {
         return;
     }
-    let r = radii.x.abs().max(radii.y.abs());
-    if r == 0.0 || radii.x == 0.0 || radii.y == 0.0 {
+    if radii.x == 0.0 || radii.y == 0.0 {
+        b.curve_to(from, to, to);
+        return;
+    }
+    // Unit scale: the larger of the radii and the chord (radii too small for the chord are
+    // scaled up by the SVG rules, so the chord bounds the corrected ellipse too). The number
+    // of cubics then depends only on the shape of the arc, never on its size.
+    let r = radii.x.abs().max(radii.y.abs()).max((to - from).hypot());
+    if !(r.is_finite() && r > 0.0) {
         b.curve_to(from, to, to);
         return;
     }

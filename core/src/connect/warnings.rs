@@ -144,6 +144,10 @@ impl Edge {
     /// sign, half-open in y). For a segment lying wholly to the left of `p` that holds for every
     /// piece, and the sum telescopes to the same expression for the segment's own ends, so only
     /// segments whose box straddles `p.x` go to kurbo (the same count, without solving cubics).
+    /// The same holds when the crossings are only known to lie left of `p` through the convex
+    /// hull of the control points ([`hull_span_at`]), and a segment whose hull meets the line
+    /// only right of `p` adds nothing; kurbo is left with the segments whose hull contains the
+    /// ray's start, which for a hole centre away from the edge is rare.
     pub fn contains(&self, p: Point) -> bool {
         let Some((r, _)) = self.cell_range(p.y, p.y, self.origin.y, self.rows) else {
             return false;
@@ -160,8 +164,12 @@ impl Edge {
             }
             // Margin for the rounding of points evaluated on the curve (a few ulps of the box).
             let slack = 1e-12 * (b.x1.abs() + b.x0.abs() + (b.y1 - b.y0));
-            if b.x1 + slack < p.x {
+            let (lo, hi) = hull_span_at(c, p.y);
+            if b.x1 + slack < p.x || hi + slack < p.x {
+                // Every crossing of the line y = p.y lies left of p: the crossings' signs.
                 winding += above(c.p0.y) - above(c.p3.y);
+            } else if lo > p.x + slack {
+                // Every crossing lies right of p: none is on the ray.
             } else {
                 let els = [PathEl::MoveTo(c.p0), PathEl::CurveTo(c.p1, c.p2, c.p3)];
                 winding += (&els[..]).winding(p);
@@ -169,6 +177,30 @@ impl Edge {
         }
         winding != 0
     }
+}
+
+/// The x-range `[lo, hi]` where the horizontal line at height `y` meets the convex hull of the
+/// control points of `c` (which contains every crossing of the curve with that line): the
+/// extreme crossings of the line with the six segments between pairs of control points.
+/// `(∞, −∞)` when the line misses the hull.
+fn hull_span_at(c: &CubicBez, y: f64) -> (f64, f64) {
+    let pts = [c.p0, c.p1, c.p2, c.p3];
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for i in 0..4 {
+        let a = pts[i];
+        if a.y == y {
+            lo = if a.x < lo { a.x } else { lo };
+            hi = if a.x > hi { a.x } else { hi };
+        }
+        for b in &pts[i + 1..] {
+            if (a.y < y && y < b.y) || (b.y < y && y < a.y) {
+                let x = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+                lo = if x < lo { x } else { lo };
+                hi = if x > hi { x } else { hi };
+            }
+        }
+    }
+    (lo, hi)
 }
 
 /// A lower bound on the squared distance from `p` to the cubic `c`: the squared distance to

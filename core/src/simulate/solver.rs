@@ -456,6 +456,7 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
                     flips += r.flips;
                     let strain = max_strain(&x, &bars(&pieces, &t));
                     let good = r.converged && reflex_count(&x, &t) == 0;
+                    eprintln!("SIM2DBG  lift {lift} it {} conv {} reflex {} strain {strain:e} vol {}", r.iterations, r.converged, reflex_count(&x, &t), signed_volume(&x, &t));
                     if best.as_ref().is_none_or(|b| strain < b.3) {
                         best = Some((x, r, t, strain));
                     }
@@ -475,6 +476,7 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
         iterations += r.iterations;
         flips += r.flips;
         converged = r.converged;
+        eprintln!("SIM2DBG level {m} iterations so far {iterations} flips {flips} conv {converged} reflex {} t {:?}", reflex_count(&x, &tri), std::time::Instant::now());
         prev = Some((pieces, x, tri));
     }
     let Some((pieces, x, tri)) = prev else {
