@@ -93,7 +93,7 @@ fn run(name: &str, a: &Contour, b: &Contour, offset: f64) {
     println!("  area error {:.3e} (≤ 1e-3) {}", s.area_error, mark(s.area_error <= 1e-3));
     println!(
         "  interior |defect| {:.3e} of 4π (≤ 5e-3) {}   seam |defect| {:.6} (4π = {:.6})",
-        s.interior_defect_sum / four_pi,
+        s.interior_defect_sum.abs() / four_pi,
         mark(s.interior_defect_sum / four_pi <= 5e-3),
         s.angle_defect_sum,
         four_pi

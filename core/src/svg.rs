@@ -10,8 +10,8 @@
 //! used because it uses an absolute arc tolerance of 0.1 unit and a 1e-5 absolute radius
 //! threshold (wrong for shapes measured in small units) and stops silently at garbage.
 //!
-//! Writing emits absolute `M`, `C`, `L`, `Z` with Rust's shortest round-trip formatting of
-//! `f64`, so reading back gives bit-identical coordinates.
+//! Writing emits absolute `M`, `C`, `L`, `Z` with the shortest round-trip text of each `f64`
+//! (exponent form when very large or small), so reading back gives bit-identical coordinates.
 
 use crate::contour::Knot;
 use crate::error::{Error, Result};
@@ -334,11 +334,21 @@ fn arc_to(b: &mut Builder, from: Point, to: Point, radii: Vec2, rot_deg: f64, la
 /// Writes one path as SVG path data: `M` then one `C` (or `L` for a segment with both handles
 /// on its anchors) per segment; closed paths end with `Z`, the closing segment written out
 /// unless it is a straight line (which `Z` draws).
+/// Shortest text that reads back as the same `f64`, exponent form for very large or small
+/// magnitudes (Rust's `Debug` formatting, without a trailing `.0`).
+fn num(x: f64) -> String {
+    let s = format!("{x:?}");
+    match s.strip_suffix(".0") {
+        Some(t) => t.to_owned(),
+        None => s,
+    }
+}
+
 pub fn write(knots: &[Knot], closed: bool) -> String {
     use std::fmt::Write;
     let mut s = String::new();
     let Some(first) = knots.first() else { return s };
-    let _ = write!(s, "M{} {}", first.anchor.x, first.anchor.y);
+    let _ = write!(s, "M{} {}", num(first.anchor.x), num(first.anchor.y));
     let n = knots.len();
     let segs = if closed { n } else { n.saturating_sub(1) };
     for i in 0..segs {
@@ -348,12 +358,17 @@ pub fn write(knots: &[Knot], closed: bool) -> String {
             break; // Z draws it
         }
         if line {
-            let _ = write!(s, " L{} {}", b.anchor.x, b.anchor.y);
+            let _ = write!(s, " L{} {}", num(b.anchor.x), num(b.anchor.y));
         } else {
             let _ = write!(
                 s,
                 " C{} {} {} {} {} {}",
-                a.right.x, a.right.y, b.left.x, b.left.y, b.anchor.x, b.anchor.y
+                num(a.right.x),
+                num(a.right.y),
+                num(b.left.x),
+                num(b.left.y),
+                num(b.anchor.x),
+                num(b.anchor.y)
             );
         }
     }

@@ -99,13 +99,42 @@ pub fn find_self_intersection(contour: &Contour) -> Option<(usize, usize)> {
     let span = |s: &Seg| (cell(s.min.x - LINEAR), cell(s.max.x + LINEAR), cell(s.min.y - LINEAR), cell(s.max.y + LINEAR));
     let spans: Vec<_> = segs.iter().map(span).collect();
     let mut grid: Vec<Vec<usize>> = vec![Vec::new(); g * g];
+    // Segments whose box covers many cells are paired with everything directly instead, so
+    // memory stays O(n) however the handles are drawn.
+    let mut big: Vec<usize> = Vec::new();
     for (k, &(x0, x1, y0, y1)) in spans.iter().enumerate() {
+        if (x1 - x0 + 1) * (y1 - y0 + 1) > 64 {
+            big.push(k);
+            continue;
+        }
         for cy in y0..=y1 {
             for cx in x0..=x1 {
                 if let Some(c) = grid.get_mut(cy * g + cx) {
                     c.push(k);
                 }
             }
+        }
+    }
+    let mut test_pair = |i: usize, j: usize| {
+        let (i, j) = (i.min(j), i.max(j));
+        let (Some(a), Some(b)) = (segs.get(i), segs.get(j)) else { return };
+        if a.min.x > b.max.x + LINEAR || b.min.x > a.max.x + LINEAR || a.min.y > b.max.y + LINEAR || b.min.y > a.max.y + LINEAR {
+            return;
+        }
+        if pair_intersects(a, b, j == i + 1, n > 1 && i == 0 && j == n - 1) {
+            found(a.index, b.index);
+        }
+    };
+    let mut is_big = vec![false; n];
+    for &i in &big {
+        for j in 0..n {
+            // A pair of big segments is tested once, from the one listed first.
+            if j != i && !is_big.get(j).copied().unwrap_or(false) {
+                test_pair(i, j);
+            }
+        }
+        if let Some(f) = is_big.get_mut(i) {
+            *f = true;
         }
     }
     for (ci, members) in grid.iter().enumerate() {
@@ -116,14 +145,7 @@ pub fn find_self_intersection(contour: &Contour) -> Option<(usize, usize)> {
                 if cx != si.0.max(sj.0) || cy != si.2.max(sj.2) {
                     continue; // tested in an earlier shared cell
                 }
-                let (a, b) = (&segs[i.min(j)], &segs[i.max(j)]);
-                if a.min.x > b.max.x + LINEAR || b.min.x > a.max.x + LINEAR || a.min.y > b.max.y + LINEAR || b.min.y > a.max.y + LINEAR {
-                    continue;
-                }
-                let (i, j) = (i.min(j), i.max(j));
-                if pair_intersects(a, b, j == i + 1, n > 1 && i == 0 && j == n - 1) {
-                    found(a.index, b.index);
-                }
+                test_pair(i, j);
             }
         }
     }

@@ -46,7 +46,7 @@ fn reversed(p: &PathDto) -> PathDto {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 200, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 96, .. ProptestConfig::default() })]
 
     #[test]
     fn measure_keeps_its_promises(p in star()) {

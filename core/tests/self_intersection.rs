@@ -118,3 +118,24 @@ fn one_moved_anchor_in_a_thousand_segments_is_found() {
     let c = crossing(&b);
     assert!(matches!(c, Some((a, b)) if (a == 499 || a == 500 || b == 499 || b == 500)), "wanted a crossing involving segment 499 or 500, got {c:?}");
 }
+
+#[test]
+fn segments_with_far_handles_are_checked_too() {
+    // Boxes spanning the whole shape go to the direct pairing, not the grid: a crossing made by
+    // such wide curves is still found, and a simple shape made of them still passes.
+    let wide_ok = path(&[
+        ([0.0, 0.0], [-3.0, -3.0], [3.0, -3.0]),
+        ([1.0, 0.0], [1.0, 0.0], [1.0, 0.0]),
+        ([1.0, 1.0], [1.0, 1.0], [1.0, 1.0]),
+        ([0.0, 1.0], [0.0, 1.0], [0.0, 1.0]),
+    ]);
+    let mut pts: Vec<(P, P, P)> = (0..40).map(|i| {
+        let t = i as f64 * std::f64::consts::TAU / 40.0;
+        let a = [t.cos(), t.sin()];
+        (a, a, a)
+    }).collect();
+    pts[0].2 = [-2.0, 3.0]; // a handle thrown across the shape: segment 0 leaves it through other edges
+    let wide_bad = path(&pts);
+    assert_eq!(crossing(&wide_ok), None, "wide handles, simple outline");
+    assert!(matches!(crossing(&wide_bad), Some((0, _))), "wanted a crossing of segment 0, got {:?}", crossing(&wide_bad));
+}

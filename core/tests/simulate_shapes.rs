@@ -177,6 +177,35 @@ fn warm_start_reaches_the_same_shape() {
     assert!(rel < 1e-5 && warm.stats.converged, "warm {} vs cold {} ({rel:.2e})", warm.stats.volume, cold.stats.volume);
 }
 
+/// Regression: the warm start used to mirror its (already outward) start while the flat
+/// ear-clipping strip gave the volume no meaningful sign, so A's chords flipped onto B's cap and
+/// the shape collapsed (volume ≈ 0 in WASM; natively it ran out of steps). Both were hidden by a
+/// cold re-solve, whose steps are added to the count: a warm start from the solution itself must
+/// take fewer steps than the cold solve, and a slider step must land on the cold answer, convex.
+#[test]
+fn warm_start_keeps_its_orientation_and_needs_no_cold_resolve() {
+    let e = ellipse(2.0, 1.0);
+    let p = perimeter(&e);
+    let cold = run(&e, &e, p / 4.0, 256);
+    let opts = SimulateOptions { offset: p / 4.0, resolution: 256, warm: Some(cold.vertices.clone()), ..Default::default() };
+    let warm = simulate(&e, &e, &opts).unwrap();
+    assert!(
+        warm.stats.iterations < cold.stats.iterations,
+        "warm from the solution: wanted fewer steps than the cold solve ({}), got {}",
+        cold.stats.iterations,
+        warm.stats.iterations
+    );
+    let rel = (warm.stats.volume - cold.stats.volume).abs() / cold.stats.volume;
+    assert!(rel < 1e-6 && warm.stats.reflex_edges == 0, "warm {} vs cold {} ({rel:.2e}), {:?}", warm.stats.volume, cold.stats.volume, warm.stats);
+    // One slider step (1 % of the perimeter) from there.
+    let next = SimulateOptions { offset: 0.26 * p, ..opts };
+    let warm = simulate(&e, &e, &next).unwrap();
+    let cold = simulate(&e, &e, &SimulateOptions { warm: None, ..next }).unwrap();
+    let rel = (warm.stats.volume - cold.stats.volume).abs() / cold.stats.volume;
+    assert!(warm.stats.converged && warm.stats.reflex_edges == 0, "slider step: {:?}", warm.stats);
+    assert!(rel < 1e-6, "slider step: warm {} vs cold {} ({rel:.2e})", warm.stats.volume, cold.stats.volume);
+}
+
 #[test]
 fn non_convex_piece_gives_a_finite_shape_and_honest_stats() {
     // A kidney-like piece (one concave stretch) glued to a circle of the same perimeter.
