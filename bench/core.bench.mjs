@@ -5,6 +5,7 @@
 import { readFileSync, statSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { fileURLToPath } from 'node:url';
+import { perimeter as referencePerimeter, segments } from '../tests/core/reference.mjs';
 
 const here = (p) => fileURLToPath(new URL(p, import.meta.url));
 const require = createRequire(import.meta.url);
@@ -27,15 +28,6 @@ function blob(n) {
     points.push({ anchor: a, left: [a[0] - d[0] * h / 3, a[1] - d[1] * h / 3], right: [a[0] + d[0] * h / 3, a[1] + d[1] * h / 3] });
   }
   return { closed: true, points };
-}
-
-function segments(path) {
-  const p = path.points, n = p.length, out = [];
-  for (let i = 0; i < n; i++) {
-    const a = p[i], b = p[(i + 1) % n];
-    out.push([a.anchor, a.right ?? a.anchor, b.left ?? b.anchor, b.anchor]);
-  }
-  return out;
 }
 
 // |B'(t)| of a cubic given by its control points.
@@ -63,30 +55,6 @@ function simpsonLength(c, eps = 1e-5) {
 }
 const simpsonPerimeter = (segs) => segs.reduce((s, c) => s + simpsonLength(c), 0);
 
-// Reference: composite 20-point Gauss–Legendre, 32 panels per segment, compensated sum.
-function gaussLegendre(n) {
-  const out = [];
-  for (let i = 0; i < n; i++) {
-    let x = Math.cos((Math.PI * (i + 0.75)) / (n + 0.5)), p0, p1, dp;
-    for (let it = 0; it < 100; it++) {
-      p0 = 1; p1 = x;
-      for (let k = 2; k <= n; k++) { const p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k; p0 = p1; p1 = p2; }
-      dp = (n * (x * p1 - p0)) / (x * x - 1);
-      const dx = p1 / dp; x -= dx;
-      if (Math.abs(dx) < 1e-17) break;
-    }
-    out.push([x, 2 / ((1 - x * x) * dp * dp)]);
-  }
-  return out;
-}
-function referencePerimeter(segs) {
-  const gl = gaussLegendre(20), panels = 32, h = 1 / panels;
-  let s = 0, comp = 0;
-  const add = (v) => { const t = s + v; comp += Math.abs(s) >= Math.abs(v) ? (s - t) + v : (v - t) + s; s = t; };
-  for (const c of segs) for (let k = 0; k < panels; k++) for (const [x, w] of gl) add(0.5 * h * w * speed(c, k * h + 0.5 * h * (x + 1)));
-  return s + comp;
-}
-
 // Best of 7 rounds of ≥ 60 ms each: the minimum is the figure least disturbed by other load.
 function timeIt(fn, rounds = 7, minMs = 60) {
   fn(); fn(); // warm up (JIT, wasm tier-up)
@@ -101,7 +69,8 @@ function timeIt(fn, rounds = 7, minMs = 60) {
 
 const path = blob(N);
 const segs = segments(path);
-const truth = referencePerimeter(segs);
+// Reference: composite 20-point Gauss–Legendre, 64 panels per segment, compensated sums.
+const truth = referencePerimeter(path);
 
 const wasmP = core.measure(path).perimeter;
 const simpP = simpsonPerimeter(segs);
@@ -123,7 +92,7 @@ const kb = statSync(here('../core/pkg/dformer_bg.wasm')).size / 1024;
 const mark = (ok) => (ok ? 'PASS' : 'MISS');
 const us = (ms) => `${(ms * 1000 / N).toFixed(3)} µs/segment`;
 console.log(`D-former core benchmark — ${N}-segment closed path, Node ${process.version}`);
-console.log(`  reference perimeter (GL20×32 panels): ${truth}`);
+console.log(`  reference perimeter (GL20×64 panels): ${truth}`);
 console.log(`  WASM measure():  ${us(msW)} (${msW.toFixed(3)} ms per path; includes input conversion, validation, area, centroid)`);
 console.log(`                   relative error ${errW.toExponential(2)}   ${mark(errW <= TARGET_ERR)} (target ≤ ${TARGET_ERR})`);
 console.log(`  JS adaptive Simpson (tol 1e-5): ${us(msS)} (${msS.toFixed(3)} ms per path), relative error ${errS.toExponential(2)}`);

@@ -15,6 +15,7 @@ import { execFileSync } from 'node:child_process';
 import { cpSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { Reader, readSections } from './tools/wasm-binary.mjs';
 import { minimumCep, scanWasmFeatures } from './tools/wasm-features.mjs';
 import { lowerToMvp } from './tools/wasm-lower-mvp.mjs';
 
@@ -27,40 +28,8 @@ const wasmDir = join(panel, 'wasm');
 /** Removes the `target_features` custom section: std is prebuilt with reference-types, which would
  * make wasm-bindgen emit an externref table our MVP objects cannot back. */
 function stripTargetFeatures(bytes) {
-  const out = [bytes.subarray(0, 8)];
-  let p = 8;
-  const leb = () => {
-    let r = 0;
-    let s = 0;
-    let b;
-    do {
-      b = bytes[p++];
-      r += (b & 0x7f) * 2 ** s;
-      s += 7;
-    } while (b & 0x80);
-    return r;
-  };
-  while (p < bytes.length) {
-    const start = p;
-    const id = bytes[p++];
-    const size = leb();
-    const body = p;
-    p = body + size;
-    if (id === 0) {
-      let q = body;
-      let n = 0;
-      let s = 0;
-      let b;
-      do {
-        b = bytes[q++];
-        n += (b & 0x7f) * 2 ** s;
-        s += 7;
-      } while (b & 0x80);
-      if (Buffer.from(bytes.subarray(q, q + n)).toString() === 'target_features') continue;
-    }
-    out.push(bytes.subarray(start, p));
-  }
-  return Buffer.concat(out);
+  const kept = readSections(bytes).filter((s) => !(s.id === 0 && new Reader(s.body).name() === 'target_features'));
+  return Buffer.concat([bytes.subarray(0, 8), ...kept.map((s) => s.raw)]);
 }
 
 async function buildWasm() {

@@ -54,28 +54,7 @@ fn shapes() -> Vec<(&'static str, PathDto)> {
     ]
 }
 
-fn moved(p: &PathDto, scale: f64, offset: P) -> PathDto {
-    let f = |q: P| [q[0] * scale + offset[0], q[1] * scale + offset[1]];
-    let mut out = p.clone();
-    for pt in &mut out.points {
-        pt.anchor = f(pt.anchor);
-        pt.left = pt.left.map(f);
-        pt.right = pt.right.map(f);
-    }
-    out
-}
 
-fn reversed(p: &PathDto) -> PathDto {
-    let n = p.points.len();
-    let mut out = p.clone();
-    out.points = (0..n)
-        .map(|i| {
-            let q = &p.points[(n - i) % n];
-            api::path::PointDto { anchor: q.anchor, left: q.right, right: q.left }
-        })
-        .collect();
-    out
-}
 
 #[test]
 fn default_accuracy_is_within_1e_12_for_any_size_position_and_direction() {

@@ -33,17 +33,6 @@ fn star() -> impl Strategy<Value = PathDto> {
         })
 }
 
-fn reversed(p: &PathDto) -> PathDto {
-    let n = p.points.len();
-    let mut out = p.clone();
-    out.points = (0..n)
-        .map(|i| {
-            let q = &p.points[(n - i) % n];
-            api::path::PointDto { anchor: q.anchor, left: q.right, right: q.left }
-        })
-        .collect();
-    out
-}
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: 96, .. ProptestConfig::default() })]

@@ -15,16 +15,6 @@ fn crossing(p: &PathDto) -> Option<(usize, usize)> {
     }
 }
 
-fn moved(p: &PathDto, s: f64, o: P) -> PathDto {
-    let f = |q: P| [q[0] * s + o[0], q[1] * s + o[1]];
-    let mut out = p.clone();
-    for q in &mut out.points {
-        q.anchor = f(q.anchor);
-        q.left = q.left.map(f);
-        q.right = q.right.map(f);
-    }
-    out
-}
 
 /// r(θ) = 1 + 0.3 sin 5θ with Hermite handles: simple, smooth, n segments.
 fn blob(n: usize) -> PathDto {

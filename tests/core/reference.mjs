@@ -1,5 +1,5 @@
-// Independent reference geometry for the core's Node tests: arc length by composite
-// Gauss–Legendre (not the module's code), closed forms, shape builders.
+// Independent reference geometry for the core's Node tests and bench/core.bench.mjs: arc length by
+// composite Gauss–Legendre (not the module's code), closed forms, shape builders.
 
 export function gaussLegendre(n) {
   const out = [];
@@ -18,6 +18,15 @@ export function gaussLegendre(n) {
 }
 const GL = gaussLegendre(20);
 
+/** Neumaier's compensated summation: the total carries about one rounding error whatever the count. */
+export function neumaier() {
+  let s = 0, comp = 0;
+  return {
+    add(v) { const t = s + v; comp += Math.abs(s) >= Math.abs(v) ? (s - t) + v : (v - t) + s; s = t; },
+    get total() { return s + comp; },
+  };
+}
+
 /** Length of a cubic (4 control points), 20-point Gauss–Legendre on 64 panels, compensated sum. */
 export function cubicLength(c, panels = 64) {
   const d = [0, 1, 2].map((i) => [c[i + 1][0] - c[i][0], c[i + 1][1] - c[i][1]]);
@@ -27,13 +36,10 @@ export function cubicLength(c, panels = 64) {
     const y = 3 * (u * u * d[0][1] + 2 * u * t * d[1][1] + t * t * d[2][1]);
     return Math.hypot(x, y);
   };
-  let s = 0, comp = 0;
+  const sum = neumaier();
   const h = 1 / panels;
-  for (let k = 0; k < panels; k++) for (const [x, w] of GL) {
-    const v = 0.5 * h * w * speed(k * h + 0.5 * h * (x + 1));
-    const t = s + v; comp += Math.abs(s) >= Math.abs(v) ? (s - t) + v : (v - t) + s; s = t;
-  }
-  return s + comp;
+  for (let k = 0; k < panels; k++) for (const [x, w] of GL) sum.add(0.5 * h * w * speed(k * h + 0.5 * h * (x + 1)));
+  return sum.total;
 }
 
 export function segments(path) {
@@ -41,7 +47,12 @@ export function segments(path) {
   return p.map((a, i) => { const b = p[(i + 1) % n]; return [a.anchor, a.right ?? a.anchor, b.left ?? b.anchor, b.anchor]; });
 }
 
-export const perimeter = (path) => segments(path).reduce((s, c) => s + cubicLength(c), 0);
+/** Perimeter: the segments' reference lengths, summed with compensation (many segments stay exact). */
+export function perimeter(path) {
+  const sum = neumaier();
+  for (const c of segments(path)) sum.add(cubicLength(c));
+  return sum.total;
+}
 
 /** Ellipse (a, b) at c as n cubic arcs (handle k = 4/3 tan(θ/4)), ccw unless cw. */
 export function ellipse(c, a, b, n = 4, cw = false) {

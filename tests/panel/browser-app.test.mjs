@@ -1,28 +1,18 @@
 // The browser app: the same page without CEP (host-browser.js). Loads the bundled samples and SVG
 // files with transforms, designs, downloads the laser SVG and checks it independently (rendered by
 // Chromium itself: isPointInFill, getTotalLength). Requires `node uxp-panel/build.mjs`.
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { artifactPath, launch, serve, waitReady, wasmBuilt } from './support.mjs';
+import { artifactPath, usePanelBrowser, waitReady } from './support.mjs';
 
-let server;
-let browser;
-before(async () => {
-  assert.ok(wasmBuilt(), 'uxp-panel/wasm/dformer.js is missing: run `node uxp-panel/build.mjs --dev` first');
-  server = await serve();
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const panel = usePanelBrowser();
 
 async function openApp(colorScheme = 'light') {
-  const page = await browser.newPage({ viewport: { width: 1100, height: 720 }, acceptDownloads: true, colorScheme });
+  const page = await panel.browser.newPage({ viewport: { width: 1100, height: 720 }, acceptDownloads: true, colorScheme });
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
-  await page.goto(server.url);
+  await page.goto(panel.url);
   await waitReady(page, 'load');
   return { page, errors };
 }
@@ -69,7 +59,7 @@ test('samples → change count → download: a laser SVG with equal perimeters a
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#apply-btn')]);
   assert.equal(download.suggestedFilename(), 'd-former-laser.svg');
   const text = readFileSync(await download.path(), 'utf8');
-  const svg = await inspectSvg(await browser.newPage(), text);
+  const svg = await inspectSvg(await panel.browser.newPage(), text);
 
   assert.match(svg.width, /mm$/, `width in mm, got ${svg.width}`);
   assert.deepEqual(svg.layers, ['Cut', 'Score', 'Engrave']);
@@ -121,7 +111,7 @@ test('the built browser app works opened from disk (file://: WASM inlined, no fe
   const { repo } = await import('./support.mjs');
   const index = join(repo, 'dist', 'd-former-web', 'index.html');
   if (!existsSync(index)) return t.skip('run `node uxp-panel/build.mjs` first');
-  const page = await browser.newPage();
+  const page = await panel.browser.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(e.message));
   await page.goto(`file://${index}`);

@@ -1,24 +1,14 @@
 // The real panel (uxp-panel/index.html) in headless Chromium with a CEP stand-in whose evalScript
 // runs the real ExtendScript bridge in the simulated Illustrator DOM. Requires `node uxp-panel/build.mjs`.
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { artifactPath, launch, serve, waitReady, wasmBuilt } from './support.mjs';
+import { artifactPath, usePanelBrowser, waitReady } from './support.mjs';
 import { openPanel, SKINS } from './cep-stand-in.mjs';
 import { referenceLength } from '../illustrator/reference-length.mjs';
 import { centroidOfAnchors, distance, inside, sample } from './geometry.mjs';
 
 const MM = 72 / 25.4;
-let server;
-let browser;
-before(async () => {
-  assert.ok(wasmBuilt(), 'uxp-panel/wasm/dformer.js is missing: run `node uxp-panel/build.mjs --dev` first');
-  server = await serve();
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const panel = usePanelBrowser();
 
 /** Every item of a snapshot layer tree, flattened, with its group path. */
 function items(snapshotDoc) {
@@ -43,7 +33,7 @@ const TWO_SHAPES = {
 };
 
 test('select two shapes, normalize, add stitching, apply: equal perimeters and paired holes in the document', async () => {
-  const { page, host, errors } = await openPanel(browser, server.url, TWO_SHAPES);
+  const { page, host, errors } = await openPanel(panel.browser, panel.url, TWO_SHAPES);
   await waitReady(page);
   assert.equal(await page.evaluate(() => document.body.dataset.state), 'ready', `panel not ready: ${await page.textContent('#message')}`);
   const before = items(host.snapshot()[0]);
@@ -99,7 +89,7 @@ test('select two shapes, normalize, add stitching, apply: equal perimeters and p
 });
 
 test('an open path in the selection: message shown, Apply disabled, document untouched', async () => {
-  const { page, host } = await openPanel(browser, server.url, {
+  const { page, host } = await openPanel(panel.browser, panel.url, {
     units: 'mm',
     shapes: [
       { name: 'A', ellipse: { top: 300, left: 0, width: 120, height: 80 } },
@@ -118,7 +108,7 @@ test('an open path in the selection: message shown, Apply disabled, document unt
 });
 
 test('Illustrator refuses the write (layer locked after reading): message shown, document untouched', async () => {
-  const { page, host } = await openPanel(browser, server.url, TWO_SHAPES);
+  const { page, host } = await openPanel(panel.browser, panel.url, TWO_SHAPES);
   await waitReady(page);
   assert.equal(await page.evaluate(() => document.body.dataset.state), 'ready');
   host.doc.layers.getByName('Layer 1').locked = true;
@@ -133,7 +123,7 @@ test('Illustrator refuses the write (layer locked after reading): message shown,
 });
 
 test('theme follows Illustrator brightness (dark → light on ThemeColorChanged); screenshots', async () => {
-  const { page } = await openPanel(browser, server.url, TWO_SHAPES, { skin: SKINS.dark });
+  const { page } = await openPanel(panel.browser, panel.url, TWO_SHAPES, { skin: SKINS.dark });
   await waitReady(page);
   assert.equal(await page.evaluate(() => document.body.className), 'theme-dark');
   assert.equal(await page.evaluate(() => getComputedStyle(document.body).backgroundColor), 'rgb(50, 50, 50)');
@@ -146,7 +136,7 @@ test('theme follows Illustrator brightness (dark → light on ThemeColorChanged)
 });
 
 test('"start at the selected anchor": connector 1 sits at the anchor picked with Direct Selection (float32 document)', async () => {
-  const { page, host } = await openPanel(browser, server.url, {
+  const { page, host } = await openPanel(panel.browser, panel.url, {
     units: 'pt',
     float32: true,
     shapes: [
@@ -181,8 +171,8 @@ test('"start at the selected anchor": connector 1 sits at the anchor picked with
 });
 
 test('layer colours and hairline widths are configurable, used by Apply and remembered by the next session', async () => {
-  const context = await browser.newContext();
-  const first = await openPanel(browser, server.url, TWO_SHAPES, { context });
+  const context = await panel.browser.newContext();
+  const first = await openPanel(panel.browser, panel.url, TWO_SHAPES, { context });
   const { page, host } = first;
   await waitReady(page);
   await page.click('#sec-layers summary');
@@ -201,7 +191,7 @@ test('layer colours and hairline widths are configurable, used by Apply and reme
     assert.ok(Math.abs(h.strokeWidth - 0.1 * MM) < 1e-9, `${h.name} stroke width: wanted ${0.1 * MM} pt, got ${h.strokeWidth}`);
   }
   await page.close();
-  const second = await openPanel(browser, server.url, TWO_SHAPES, { context });
+  const second = await openPanel(panel.browser, panel.url, TWO_SHAPES, { context });
   await waitReady(second.page);
   assert.equal(await second.page.$eval('.layer-row[data-layer="cut"] .layer-color', (el) => el.value), '#00aa00', 'colour remembered');
   assert.equal(await second.page.$eval('.layer-row[data-layer="cut"] .layer-width', (el) => el.value), '0.1', 'width remembered (mm)');
@@ -209,7 +199,7 @@ test('layer colours and hairline widths are configurable, used by Apply and reme
 });
 
 test('teeth: each piece gets its toothed cut outline on the Cut layer; the normalized paths stay equal', async () => {
-  const { page, host } = await openPanel(browser, server.url, TWO_SHAPES);
+  const { page, host } = await openPanel(panel.browser, panel.url, TWO_SHAPES);
   await waitReady(page);
   await page.click('#kind button[data-kind="teeth"]');
   await page.fill('#count', '16');

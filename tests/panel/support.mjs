@@ -1,5 +1,7 @@
 // Shared helpers for the panel tests: a static HTTP server for uxp-panel/ (port 0), Chromium via
-// playwright-core, and an independent reader for the laser SVG.
+// playwright-core (usePanelBrowser: both for one test file), and the page readiness wait.
+import { after, before } from 'node:test';
+import assert from 'node:assert/strict';
 import { createServer } from 'node:http';
 import { existsSync, mkdirSync, readFileSync, statSync } from 'node:fs';
 import { dirname, extname, join, normalize } from 'node:path';
@@ -39,6 +41,22 @@ export function launch() {
     executablePath: '/usr/bin/chromium',
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update'],
   });
+}
+
+/** Registers before/after hooks for a test file: checks the panel is built, serves uxp-panel/ and
+ * launches Chromium. The returned object holds `browser` and `url` once the `before` hook has run. */
+export function usePanelBrowser() {
+  const panel = { browser: null, server: null, get url() { return this.server.url; } };
+  before(async () => {
+    assert.ok(wasmBuilt(), 'uxp-panel/wasm/dformer.js is missing: run `node uxp-panel/build.mjs --dev` first');
+    panel.server = await serve();
+    panel.browser = await launch();
+  });
+  after(async () => {
+    await panel.browser?.close();
+    await panel.server?.close();
+  });
+  return panel;
 }
 
 export function artifactPath(name) {

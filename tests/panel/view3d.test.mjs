@@ -1,23 +1,13 @@
 // Phase 2: the 3D form next to the 2D preview (browser app and CEP panel): shaded surface, seam,
 // orbit, live seam-offset slider, volume/area in document units (+ litres), OBJ/STL export.
 // The figures on screen are checked against the exported mesh (divergence theorem, triangle areas).
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { artifactPath, launch, serve, waitReady, wasmBuilt } from './support.mjs';
+import { artifactPath, usePanelBrowser, waitReady } from './support.mjs';
 import { openPanel, SKINS } from './cep-stand-in.mjs';
 
-let server;
-let browser;
-before(async () => {
-  assert.ok(wasmBuilt(), 'uxp-panel/wasm/dformer.js is missing: run `node uxp-panel/build.mjs --dev` first');
-  server = await serve();
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const panel = usePanelBrowser();
 
 function parseObj(text) {
   const v = [];
@@ -49,8 +39,8 @@ async function hasSimulate(page) {
 }
 
 test('browser app: 3D form of two crossed ellipses — figures match the exported mesh; slider re-solves; orbit; OBJ/STL', async (t) => {
-  const page = await browser.newPage({ viewport: { width: 1100, height: 720 }, acceptDownloads: true });
-  await page.goto(server.url);
+  const page = await panel.browser.newPage({ viewport: { width: 1100, height: 720 }, acceptDownloads: true });
+  await page.goto(panel.url);
   await waitReady(page, 'load');
   if (!(await hasSimulate(page))) return t.skip('the core build has no simulate() yet');
   await page.selectOption('#sample-select', 'two-ellipses');
@@ -107,7 +97,7 @@ test('browser app: 3D form of two crossed ellipses — figures match the exporte
 });
 
 test('CEP panel: the 3D tab in a docked panel (dark theme screenshot)', async (t) => {
-  const { page } = await openPanel(browser, server.url, {
+  const { page } = await openPanel(panel.browser, panel.url, {
     units: 'cm',
     shapes: [
       { name: 'Ellipse', ellipse: { top: 400, left: 0, width: 220, height: 110 } },

@@ -6,19 +6,7 @@ import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { minimumCep, scanWasmFeatures } from '../../uxp-panel/tools/wasm-features.mjs';
 import { panelDir, repo } from './support.mjs';
-
-const u32 = (n) => {
-  const out = [];
-  do {
-    let b = n & 0x7f;
-    n >>>= 7;
-    if (n) b |= 0x80;
-    out.push(b);
-  } while (n);
-  return out;
-};
-const section = (id, bytes) => [id, ...u32(bytes.length), ...bytes];
-const vec = (items) => [...u32(items.length), ...items.flat()];
+import { section, u32, vec } from './wasm-assemble.mjs';
 
 /** A module with one function of type `type` (bytes of a functype) and body `code` (without locals/end). */
 function module({ params = [0x7f], results = [0x7f], code, memory = false, table = null, extraTypes = [] }) {

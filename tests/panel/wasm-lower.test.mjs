@@ -5,24 +5,12 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { lowerToMvp } from '../../uxp-panel/tools/wasm-lower-mvp.mjs';
 import { scanWasmFeatures } from '../../uxp-panel/tools/wasm-features.mjs';
+import { section, str, u32, vec } from './wasm-assemble.mjs';
 
 const I32 = 0x7f;
 const I64 = 0x7e;
 const F32 = 0x7d;
 const F64 = 0x7c;
-const u32 = (n) => {
-  const out = [];
-  do {
-    let b = n & 0x7f;
-    n >>>= 7;
-    if (n) b |= 0x80;
-    out.push(b);
-  } while (n);
-  return out;
-};
-const str = (s) => [...u32(s.length), ...Buffer.from(s)];
-const section = (id, bytes) => [id, ...u32(bytes.length), ...bytes];
-const vec = (items) => [...u32(items.length), ...items.flat()];
 
 /** fns: [{ name, params, results, code }] → a module exporting them and its memory "mem". */
 function build(fns) {

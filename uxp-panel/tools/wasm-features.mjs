@@ -10,6 +10,8 @@
 //   relaxed SIMD 114.
 // CEP's Chromium (Adobe CEP cookbooks): CEP 8 = 57, CEP 9 = 61, CEP 10 = 74, CEP 11 = 88, CEP 12 = 99.
 
+import { Reader, readSections } from './wasm-binary.mjs';
+
 export const FEATURE_CHROMIUM = {
   'mutable-globals': 74,
   'sign-ext': 74,
@@ -32,49 +34,6 @@ export const CEP_RELEASES = [
   { cep: 12, chromium: 99, illustrator: null }, // Adobe lists Illustrator as "TBD" for CEP 12
 ];
 
-export class Reader {
-  constructor(bytes, pos = 0, end = bytes.length) {
-    this.b = bytes;
-    this.p = pos;
-    this.end = end;
-  }
-  byte() {
-    if (this.p >= this.end) throw new Error(`unexpected end of section at byte ${this.p}`);
-    return this.b[this.p++];
-  }
-  u32() {
-    let result = 0;
-    let shift = 0;
-    for (;;) {
-      const byte = this.byte();
-      result += (byte & 0x7f) * 2 ** shift;
-      shift += 7;
-      if (!(byte & 0x80)) return result;
-    }
-  }
-  /** Signed LEB128 of any width; only its extent matters except for block types. */
-  sleb() {
-    let result = 0;
-    let shift = 0;
-    let byte;
-    do {
-      byte = this.byte();
-      result += (byte & 0x7f) * 2 ** shift;
-      shift += 7;
-    } while (byte & 0x80);
-    if (shift < 53 && byte & 0x40) result -= 2 ** shift;
-    return result;
-  }
-  skip(n) {
-    this.p += n;
-  }
-  vec(f) {
-    const n = this.u32();
-    for (let i = 0; i < n; i++) f(i);
-    return n;
-  }
-}
-
 /**
  * Scans `bytes` (a .wasm module) and returns `{ features: {name: count}, minChromium }`.
  * Throws on a malformed module rather than guessing.
@@ -91,12 +50,8 @@ export function scanWasmFeatures(bytes) {
     if (current !== null) (where[name] = where[name] || new Set()).add(current);
   };
   let names = null;
-  const r = new Reader(u8, 8);
-  while (r.p < u8.length) {
-    const id = r.byte();
-    const size = r.u32();
-    const end = r.p + size;
-    const s = new Reader(u8, r.p, end);
+  for (const { id, offset, body } of readSections(u8)) {
+    const s = new Reader(u8, offset, offset + body.length);
     if (id === 1) typeSection(s, use);
     else if (id === 2) importedFuncs = importSection(s, use);
     else if (id === 4) s.vec(() => tableType(s, use));
@@ -111,7 +66,6 @@ export function scanWasmFeatures(bytes) {
     } else if (id === 0) names = nameSection(s) || names;
     else if (id === 11) dataSection(s, use);
     else if (id === 12) use('bulk-memory'); // data count section
-    r.p = end;
   }
   let minChromium = 57;
   for (const name of Object.keys(features)) minChromium = Math.max(minChromium, FEATURE_CHROMIUM[name] || 0);
@@ -124,10 +78,7 @@ export function scanWasmFeatures(bytes) {
 
 /** Function names from the `name` custom section (subsection 1), if present. */
 function nameSection(s) {
-  const len = s.u32();
-  const title = Buffer.from(s.b.subarray(s.p, s.p + len)).toString();
-  s.p += len;
-  if (title !== 'name') return null;
+  if (s.name() !== 'name') return null;
   const names = new Map();
   while (s.p < s.end) {
     const sub = s.byte();
@@ -136,9 +87,7 @@ function nameSection(s) {
     if (sub === 1) {
       s.vec(() => {
         const idx = s.u32();
-        const n = s.u32();
-        names.set(idx, Buffer.from(s.b.subarray(s.p, s.p + n)).toString());
-        s.p += n;
+        names.set(idx, s.name());
       });
     }
     s.p = end;
@@ -177,7 +126,8 @@ function tableType(s, use) {
   limits(s);
 }
 
-function importSection(s, use) {
+/** Walks the import section, recording features; returns the number of imported functions. */
+export function importSection(s, use) {
   let funcs = 0;
   s.vec(() => {
     s.skip(s.u32());

@@ -8,7 +8,8 @@
 //                 else the trapping truncation (which cannot trap once the range is checked)
 // Anything else post-MVP (SIMD, reference types, …) cannot be lowered and is left as is; the
 // feature scan reports it. New functions are appended after the existing ones, so no index moves.
-import { Reader, instruction, scanWasmFeatures } from './wasm-features.mjs';
+import { Reader, readSections } from './wasm-binary.mjs';
+import { importSection, instruction, scanWasmFeatures } from './wasm-features.mjs';
 
 const u32 = (n) => {
   const out = [];
@@ -124,17 +125,6 @@ const MEMSET_BODY = [
   0x0b,
 ];
 
-function readSections(bytes) {
-  const r = new Reader(bytes, 8);
-  const sections = [];
-  while (r.p < bytes.length) {
-    const id = r.byte();
-    const size = r.u32();
-    sections.push({ id, body: bytes.subarray(r.p, r.p + size) });
-    r.p += size;
-  }
-  return sections;
-}
 /** Concatenates byte chunks (number arrays or Uint8Arrays) without spreading large arrays. */
 const concat = (chunks) => Buffer.concat(chunks.map((c) => (c instanceof Uint8Array ? c : Uint8Array.from(c))));
 const section = (id, body) => concat([[id, ...u32(body.length)], body]);
@@ -147,31 +137,7 @@ export function lowerToMvp(input) {
   const bytes = input instanceof Uint8Array ? input : new Uint8Array(input);
   const sections = readSections(bytes);
   const get = (id) => sections.find((s) => s.id === id);
-  let imports = 0;
-  if (get(2)) {
-    const r = new Reader(get(2).body);
-    r.vec(() => {
-      r.skip(r.u32());
-      r.skip(r.u32());
-      const kind = r.byte();
-      if (kind === 0) {
-        r.u32();
-        imports++;
-      } else if (kind === 1) {
-        r.byte();
-        const f = r.byte();
-        r.u32();
-        if (f & 1) r.u32();
-      } else if (kind === 2) {
-        const f = r.byte();
-        r.u32();
-        if (f & 1) r.u32();
-      } else {
-        r.byte();
-        r.byte();
-      }
-    });
-  }
+  const imports = get(2) ? importSection(new Reader(get(2).body), () => {}) : 0;
   const typeR = new Reader(get(1).body);
   const typeCount = typeR.u32();
   const funcR = new Reader(get(3).body);

@@ -32,6 +32,21 @@ pub(crate) fn arr(p: Point) -> [f64; 2] {
     [p.x, p.y]
 }
 
+impl PointDto {
+    /// The knot of this point; a missing handle lies at the anchor (a corner).
+    pub(crate) fn to_knot(&self) -> Knot {
+        let a = pt(self.anchor);
+        Knot { anchor: a, left: self.left.map(pt).unwrap_or(a), right: self.right.map(pt).unwrap_or(a) }
+    }
+}
+
+impl From<&Knot> for PointDto {
+    /// Always writes both handles, so a host can copy them straight into its points.
+    fn from(k: &Knot) -> Self {
+        PointDto { anchor: arr(k.anchor), left: Some(arr(k.left)), right: Some(arr(k.right)) }
+    }
+}
+
 impl PathDto {
     /// Converts to a closed [`Contour`], refusing open paths; `piece` numbers the messages.
     pub fn to_contour(&self, piece: usize) -> Result<Contour> {
@@ -42,28 +57,13 @@ impl PathDto {
             }
             return Err(Error::OpenPath { piece });
         }
-        let knots = self
-            .points
-            .iter()
-            .map(|p| {
-                let a = pt(p.anchor);
-                Knot { anchor: a, left: p.left.map(pt).unwrap_or(a), right: p.right.map(pt).unwrap_or(a) }
-            })
-            .collect();
-        Contour::new(knots, piece)
+        Contour::new(self.points.iter().map(PointDto::to_knot).collect(), piece)
     }
 }
 
 impl From<&Contour> for PathDto {
     /// Always writes both handles, so a host can copy them straight into its points.
     fn from(c: &Contour) -> Self {
-        PathDto {
-            closed: true,
-            points: c
-                .knots()
-                .iter()
-                .map(|k| PointDto { anchor: arr(k.anchor), left: Some(arr(k.left)), right: Some(arr(k.right)) })
-                .collect(),
-        }
+        PathDto { closed: true, points: c.knots().iter().map(PointDto::from).collect() }
     }
 }

@@ -433,17 +433,18 @@ fn worst_reflex(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Finds the seam positions at `options.resolution` seam vertices through coarser levels (32,
-/// 64, … seam vertices, each laid onto the last), the coarsest started from the warm start or
-/// the multistart. Never panics; an
+/// Finds the seam positions at `options.resolution` seam vertices, starting from the warm start
+/// or from coarser levels (32, 64, … seam vertices, each laid onto the last). Never panics; an
 /// input that cannot even be triangulated is an error.
 pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solution)> {
     let n = options.resolution;
     let mut levels = vec![n];
-    while levels[levels.len() - 1] / 2 >= COARSEST {
-        levels.push(levels[levels.len() - 1] / 2);
+    if options.warm.is_none() {
+        while levels[levels.len() - 1] / 2 >= COARSEST {
+            levels.push(levels[levels.len() - 1] / 2);
+        }
+        levels.reverse();
     }
-    levels.reverse();
     let mut prev: Option<(SeamPieces, Vec<V3>, [Triangulation; 2])> = None;
     let (mut iterations, mut flips) = (0, 0);
     let mut converged = false;
@@ -469,17 +470,19 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
                 let r = relax(&pieces, &mut x, &mut tri, budget, step_tol, Orientation::Kept);
                 (x, r)
             }
-            (None, warm) => {
-                // The coarsest level starts from the warm start, if any (a previous result's
-                // vertices, resampled: its branch, and already outward, so never mirrored), then
-                // from the multistart: the saddle's height decides which isometric branch
-                // Gauss–Newton falls into. The first converged start without a dent is kept
-                // (coarse levels keep tiny reflex folds, see DENT_SINE, which the finer levels
+            (None, Some(w)) => {
+                // A warm start: a previous result's vertices, already outward (never mirrored).
+                let mut x = resample(w, m);
+                let budget = options.max_iterations.saturating_sub(iterations).max(1);
+                let r = relax(&pieces, &mut x, &mut tri, budget, step_tol, Orientation::Kept);
+                (x, r)
+            }
+            (None, None) => {
+                // Multistart on the coarsest level (cheap): the saddle's height decides which
+                // isometric branch Gauss–Newton falls into; keep the first converged one without a
+                // dent (coarse levels keep tiny reflex folds, see DENT_SINE, which the finer levels
                 // flip away; insisting on none here made every solve try all eight heights).
-                // A warm start that leads nowhere convex (e.g. the vertices of another shape)
-                // thus costs one cheap coarse attempt, not a second full solve.
-                let starts = warm.iter().map(|w| (resample(w, m), Orientation::Kept));
-                let starts = starts.chain(LIFTS.iter().map(|&lift| (initial_guess(&pieces, lift), Orientation::Free)));
+                let starts = LIFTS.iter().map(|&lift| (initial_guess(&pieces, lift), Orientation::Free));
                 let mut best: Option<(Vec<V3>, Relaxed, [Triangulation; 2], f64)> = None;
                 for (mut x, orientation) in starts {
                     let mut t = tri.clone();
@@ -513,5 +516,16 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
     let Some((pieces, x, tri)) = prev else {
         return Err(Error::Infeasible { reason: "No seam resolution to solve at.".into() });
     };
+    // A warm start that leads nowhere convex (e.g. the vertices of another shape, which can pull
+    // the solver into an isometric but dented branch) is dropped for a cold solve rather than
+    // returned. "Convex" allows the tiny reflex folds that coarse resolutions keep (the cold
+    // solve keeps them too), not a dent.
+    if options.warm.is_some() && !(converged && worst_reflex(&x, &tri) <= DENT_SINE) {
+        let cold = SimulateOptions { warm: None, ..options.clone() };
+        let (p, mut sol) = solve(glue, &cold)?;
+        sol.iterations += iterations;
+        sol.flips += flips;
+        return Ok((p, sol));
+    }
     Ok((pieces, Solution { x, tri, iterations, flips, converged }))
 }

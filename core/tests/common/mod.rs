@@ -6,34 +6,33 @@ use dformer::api::path::{PathDto, PointDto};
 
 pub type P = [f64; 2];
 
-/// Gauss–Legendre nodes and weights on [-1, 1] by Newton's method on P_n (three-term recurrence).
+/// P_n(x) and P_n'(x) by the three-term recurrence k·P_k = (2k−1)·x·P_{k−1} − (k−1)·P_{k−2}
+/// and P_n' = n·(x·P_n − P_{n−1}) / (x² − 1).
+fn legendre(n: usize, x: f64) -> (f64, f64) {
+    let (mut p0, mut p1) = (1.0, x);
+    for k in 2..=n {
+        let k = k as f64;
+        let p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+    }
+    (p1, n as f64 * (x * p1 - p0) / (x * x - 1.0))
+}
+
+/// Gauss–Legendre nodes and weights on [-1, 1] by Newton's method on P_n; weight 2/((1−x²)·P_n'(x)²).
 pub fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
     let mut out = Vec::with_capacity(n);
     for i in 0..n {
         let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
         for _ in 0..100 {
-            let (mut p0, mut p1) = (1.0, x);
-            for k in 2..=n {
-                let k = k as f64;
-                let p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            let dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
-            let dx = p1 / dp;
+            let (p, dp) = legendre(n, x);
+            let dx = p / dp;
             x -= dx;
             if dx.abs() < 1e-17 {
                 break;
             }
         }
-        let (mut p0, mut p1) = (1.0, x);
-        for k in 2..=n {
-            let k = k as f64;
-            let p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-            p0 = p1;
-            p1 = p2;
-        }
-        let dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+        let (_, dp) = legendre(n, x);
         out.push((x, 2.0 / ((1.0 - x * x) * dp * dp)));
     }
     out
@@ -50,19 +49,25 @@ pub fn ksum(xs: impl IntoIterator<Item = f64>) -> f64 {
     s + c
 }
 
+/// The speed |B'(t)| of the cubic p0..p3, evaluated from control-point *differences*
+/// (translation-exact).
+fn speed(p: [P; 4]) -> impl Fn(f64) -> f64 {
+    let d = |i: usize, k: usize| p[i + 1][k] - p[i][k];
+    let (d0, d1, d2) = ([d(0, 0), d(0, 1)], [d(1, 0), d(1, 1)], [d(2, 0), d(2, 1)]);
+    move |t: f64| {
+        let u = 1.0 - t;
+        let x = 3.0 * (u * u * d0[0] + 2.0 * u * t * d1[0] + t * t * d2[0]);
+        let y = 3.0 * (u * u * d0[1] + 2.0 * u * t * d1[1] + t * t * d2[1]);
+        x.hypot(y)
+    }
+}
+
 /// Length of the cubic p0..p3 by composite 20-point Gauss–Legendre on `panels` equal panels,
 /// with the speed |B'(t)| evaluated from control-point *differences* (translation-exact) and
 /// compensated summation. Independent of kurbo and of the crate.
 pub fn cubic_len_truth(p: [P; 4], panels: usize) -> f64 {
     let gl = gauss_legendre(20);
-    let d = |i: usize, k: usize| p[i + 1][k] - p[i][k];
-    let (d0, d1, d2) = ([d(0, 0), d(0, 1)], [d(1, 0), d(1, 1)], [d(2, 0), d(2, 1)]);
-    let speed = |t: f64| {
-        let u = 1.0 - t;
-        let x = 3.0 * (u * u * d0[0] + 2.0 * u * t * d1[0] + t * t * d2[0]);
-        let y = 3.0 * (u * u * d0[1] + 2.0 * u * t * d1[1] + t * t * d2[1]);
-        x.hypot(y)
-    };
+    let speed = speed(p);
     let h = 1.0 / panels as f64;
     ksum((0..panels).flat_map(|k| {
         let a = k as f64 * h;
@@ -76,14 +81,7 @@ pub fn cubic_len_truth(p: [P; 4], panels: usize) -> f64 {
 /// end point, which any fixed panel grid can miss; bisection resolves it. Independent of kurbo.
 pub fn cubic_len_adaptive(p: [P; 4]) -> f64 {
     let gl = gauss_legendre(20);
-    let d = |i: usize, k: usize| p[i + 1][k] - p[i][k];
-    let (d0, d1, d2) = ([d(0, 0), d(0, 1)], [d(1, 0), d(1, 1)], [d(2, 0), d(2, 1)]);
-    let speed = |t: f64| {
-        let u = 1.0 - t;
-        let x = 3.0 * (u * u * d0[0] + 2.0 * u * t * d1[0] + t * t * d2[0]);
-        let y = 3.0 * (u * u * d0[1] + 2.0 * u * t * d1[1] + t * t * d2[1]);
-        x.hypot(y)
-    };
+    let speed = speed(p);
     let panel = |a: f64, b: f64| ksum(gl.iter().map(|&(x, w)| 0.5 * (b - a) * w * speed(a + 0.5 * (b - a) * (x + 1.0))));
     let scale = cubic_len_truth(p, 16).abs().max(f64::MIN_POSITIVE);
     fn rec(a: f64, b: f64, whole: f64, depth: u32, tol: f64, panel: &dyn Fn(f64, f64) -> f64, out: &mut Vec<f64>) {
@@ -168,6 +166,31 @@ pub fn ellipse(c: P, a: f64, b: f64, n: usize, cw: bool) -> PathDto {
         })
         .collect();
     path(&pts)
+}
+
+/// The path scaled by `scale` about the origin, then shifted by `offset`.
+pub fn moved(p: &PathDto, scale: f64, offset: P) -> PathDto {
+    let f = |q: P| [q[0] * scale + offset[0], q[1] * scale + offset[1]];
+    let mut out = p.clone();
+    for pt in &mut out.points {
+        pt.anchor = f(pt.anchor);
+        pt.left = pt.left.map(f);
+        pt.right = pt.right.map(f);
+    }
+    out
+}
+
+/// The same outline drawn the other way round, starting at the same anchor (handles swap sides).
+pub fn reversed(p: &PathDto) -> PathDto {
+    let n = p.points.len();
+    let mut out = p.clone();
+    out.points = (0..n)
+        .map(|i| {
+            let q = &p.points[(n - i) % n];
+            PointDto { anchor: q.anchor, left: q.right, right: q.left }
+        })
+        .collect();
+    out
 }
 
 pub fn rel(got: f64, want: f64) -> f64 {
