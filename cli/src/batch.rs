@@ -212,20 +212,47 @@ pub fn normalize(
 }
 
 /// Options of `dformer connect` as given on the command line (lengths still as text).
+#[derive(clap::Args)]
 pub struct ConnectArgs {
+    /// stitch, teeth, leaves or hybrid.
+    #[arg(long, default_value = "stitch")]
     pub kind: String,
+    /// Number of connectors on each piece (give this or --pitch).
+    #[arg(long)]
     pub count: Option<f64>,
+    /// Distance between connectors along the edge, e.g. 12mm (rounded to divide the perimeter).
+    #[arg(long)]
     pub pitch: Option<String>,
+    /// Shift of every connector, as a fraction of the pitch (0 to 1).
+    #[arg(long)]
     pub slide: Option<f64>,
-    pub start: Option<[String; 2]>,
+    /// Connector 1 on each piece: distances along A and B from their first nodes.
+    #[arg(long, num_args = 2, value_names = ["A", "B"])]
+    pub start: Option<Vec<String>>,
+    /// Edge to hole centre.
+    #[arg(long)]
     pub inset: Option<String>,
+    /// Hole diameter.
+    #[arg(long)]
     pub diameter: Option<String>,
+    /// Tooth or leaf length.
+    #[arg(long)]
     pub length: Option<String>,
+    /// Tooth flank angle in degrees (90 = square).
+    #[arg(long)]
     pub angle: Option<f64>,
+    /// Connectors on the other side of the edge.
+    #[arg(long)]
     pub invert: bool,
+    /// Laser kerf to compensate (cut width).
+    #[arg(long)]
     pub kerf: Option<String>,
+    /// Height of the engraved numbers (default 40% of the pitch).
+    #[arg(long)]
     pub label_size: Option<String>,
-    pub labels: bool,
+    /// Do not engrave connector numbers.
+    #[arg(long)]
+    pub no_labels: bool,
 }
 
 /// `dformer connect`: paired connectors on the two chosen shapes, written as laser layers.
@@ -246,8 +273,14 @@ pub fn connect(
             })
             .transpose()
     };
-    let start = match &a.start {
+    let start = match a.start.as_deref() {
         Some([sa, sb]) => Some([file.scale.parse_user(sa)?, file.scale.parse_user(sb)?]),
+        Some(other) => {
+            return Err(format!(
+                "--start: wanted two distances (A and B), got {}",
+                other.len()
+            ))
+        }
         None => None,
     };
     let options = ConnectOptionsDto {
@@ -305,7 +338,7 @@ pub fn connect(
                 body,
             });
         }
-        if a.labels {
+        if !a.no_labels {
             let items: Vec<_> = piece
                 .labels
                 .iter()

@@ -81,45 +81,8 @@ enum Command {
         file: FileArgs,
         #[command(flatten)]
         out: OutArgs,
-        /// stitch, teeth, leaves or hybrid.
-        #[arg(long, default_value = "stitch")]
-        kind: String,
-        /// Number of connectors on each piece (give this or --pitch).
-        #[arg(long)]
-        count: Option<f64>,
-        /// Distance between connectors along the edge, e.g. 12mm (rounded to divide the perimeter).
-        #[arg(long)]
-        pitch: Option<String>,
-        /// Shift of every connector, as a fraction of the pitch (0 to 1).
-        #[arg(long)]
-        slide: Option<f64>,
-        /// Connector 1 on each piece: distances along A and B from their first nodes.
-        #[arg(long, num_args = 2, value_names = ["A", "B"])]
-        start: Option<Vec<String>>,
-        /// Edge to hole centre.
-        #[arg(long)]
-        inset: Option<String>,
-        /// Hole diameter.
-        #[arg(long)]
-        diameter: Option<String>,
-        /// Tooth or leaf length.
-        #[arg(long)]
-        length: Option<String>,
-        /// Tooth flank angle in degrees (90 = square).
-        #[arg(long)]
-        angle: Option<f64>,
-        /// Connectors on the other side of the edge.
-        #[arg(long)]
-        invert: bool,
-        /// Laser kerf to compensate (cut width).
-        #[arg(long)]
-        kerf: Option<String>,
-        /// Height of the engraved numbers (default 40% of the pitch).
-        #[arg(long)]
-        label_size: Option<String>,
-        /// Do not engrave connector numbers.
-        #[arg(long)]
-        no_labels: bool,
+        #[command(flatten)]
+        connect: batch::ConnectArgs,
     },
 }
 
@@ -167,13 +130,31 @@ fn write_output(out: &OutArgs, text: &str) -> Result<(), String> {
     }
 }
 
+/// Reads and parses the input SVG, then runs `f` on its text and the parsed document.
+fn with_svg<T>(
+    file: &FileArgs,
+    f: impl FnOnce(&str, &svgdoc::SvgFile<'_>) -> Result<T, String>,
+) -> Result<T, String> {
+    let source = read_input(&file.input)?;
+    let svg = svgdoc::SvgFile::parse(&source, file.unit.as_deref())?;
+    f(&source, &svg)
+}
+
+/// Writes the edited SVG and prints the report on stderr.
+fn finish(out: &OutArgs, (text, report): (String, String)) -> Result<(), String> {
+    write_output(out, &text)?;
+    eprint!("{report}");
+    Ok(())
+}
+
 fn run_svg(command: Command) -> Result<(), String> {
     match command {
         Command::Json => unreachable!("handled in main"),
         Command::Measure { file, json } => {
-            let source = read_input(&file.input)?;
-            let svg = svgdoc::SvgFile::parse(&source, file.unit.as_deref())?;
-            print!("{}", batch::measure(&svg, &file.ids, json)?);
+            print!(
+                "{}",
+                with_svg(&file, |_, svg| batch::measure(svg, &file.ids, json))?
+            );
             Ok(())
         }
         Command::Normalize {
@@ -181,53 +162,18 @@ fn run_svg(command: Command) -> Result<(), String> {
             out,
             target,
             pivot,
-        } => {
-            let source = read_input(&file.input)?;
-            let svg = svgdoc::SvgFile::parse(&source, file.unit.as_deref())?;
-            let (text, report) = batch::normalize(&source, &svg, &file.ids, &target, &pivot)?;
-            write_output(&out, &text)?;
-            eprint!("{report}");
-            Ok(())
-        }
-        Command::Connect {
-            file,
-            out,
-            kind,
-            count,
-            pitch,
-            slide,
-            start,
-            inset,
-            diameter,
-            length,
-            angle,
-            invert,
-            kerf,
-            label_size,
-            no_labels,
-        } => {
-            let source = read_input(&file.input)?;
-            let svg = svgdoc::SvgFile::parse(&source, file.unit.as_deref())?;
-            let args = batch::ConnectArgs {
-                kind,
-                count,
-                pitch,
-                slide,
-                start: start.map(|v| [v[0].clone(), v[1].clone()]),
-                inset,
-                diameter,
-                length,
-                angle,
-                invert,
-                kerf,
-                label_size,
-                labels: !no_labels,
-            };
-            let (text, report) = batch::connect(&source, &svg, &file.ids, &args)?;
-            write_output(&out, &text)?;
-            eprint!("{report}");
-            Ok(())
-        }
+        } => finish(
+            &out,
+            with_svg(&file, |source, svg| {
+                batch::normalize(source, svg, &file.ids, &target, &pivot)
+            })?,
+        ),
+        Command::Connect { file, out, connect } => finish(
+            &out,
+            with_svg(&file, |source, svg| {
+                batch::connect(source, svg, &file.ids, &connect)
+            })?,
+        ),
     }
 }
 

@@ -54,8 +54,6 @@ fn shapes() -> Vec<(&'static str, PathDto)> {
     ]
 }
 
-
-
 #[test]
 fn default_accuracy_is_within_1e_12_for_any_size_position_and_direction() {
     for (name, shape) in shapes() {

@@ -33,7 +33,6 @@ fn star() -> impl Strategy<Value = PathDto> {
         })
 }
 
-
 proptest! {
     #![proptest_config(ProptestConfig { cases: 96, .. ProptestConfig::default() })]
 

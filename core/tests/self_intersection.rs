@@ -15,7 +15,6 @@ fn crossing(p: &PathDto) -> Option<(usize, usize)> {
     }
 }
 
-
 /// r(θ) = 1 + 0.3 sin 5θ with Hermite handles: simple, smooth, n segments.
 fn blob(n: usize) -> PathDto {
     let h = std::f64::consts::TAU / n as f64;

@@ -22,6 +22,12 @@ function items(snapshotDoc) {
   for (const l of snapshotDoc.layers) walk(l.items, l.name, null);
   return out;
 }
+/** Presses Apply and waits for the bridge's answer, which must be 'ok' (else the panel's status is the message). */
+async function applyOk(page) {
+  await page.click('#apply-btn');
+  await page.waitForFunction(() => document.body.dataset.applied);
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', `apply failed: ${await page.textContent('#status')}`);
+}
 const lengthOf = (it) => referenceLength({ closed: it.closed, points: it.points.map((p) => ({ anchor: p.a, left: p.l, right: p.r })) });
 
 const TWO_SHAPES = {
@@ -50,9 +56,7 @@ test('select two shapes, normalize, add stitching, apply: equal perimeters and p
   assert.equal(previewHoles, 40, `preview holes: wanted 40 (20 per piece), got ${previewHoles}`);
   assert.deepEqual(items(host.snapshot()[0]), before, 'nothing is written before Apply');
 
-  await page.click('#apply-btn');
-  await page.waitForFunction(() => document.body.dataset.applied);
-  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', `apply failed: ${await page.textContent('#status')}`);
+  await applyOk(page);
   assert.match(await page.textContent('#status'), /Updated 2 path\(s\), created \d+ item\(s\)/);
 
   const after = items(host.snapshot()[0]);
@@ -152,9 +156,7 @@ test('"start at the selected anchor": connector 1 sits at the anchor picked with
   await page.selectOption(row, 'selected');
   await page.fill('#count', '12');
   await page.waitForFunction(() => /^12 connectors/.test(document.querySelector('#stats').textContent));
-  await page.click('#apply-btn');
-  await page.waitForFunction(() => document.body.dataset.applied);
-  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#status'));
+  await applyOk(page);
   const all = items(host.snapshot()[0]);
   const square = all.find((i) => i.name === 'Square' && i.typename === 'PathItem');
   const disc = all.find((i) => i.name === 'Disc' && i.typename === 'PathItem');
@@ -181,9 +183,7 @@ test('layer colours and hairline widths are configurable, used by Apply and reme
     el.dispatchEvent(new Event('input'));
   });
   await page.fill('.layer-row[data-layer="cut"] .layer-width', '0.1'); // mm
-  await page.click('#apply-btn');
-  await page.waitForFunction(() => document.body.dataset.applied);
-  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#status'));
+  await applyOk(page);
   const holes = items(host.snapshot()[0]).filter((i) => /^hole \d+$/.test(i.name));
   assert.ok(holes.length > 0);
   for (const h of holes) {
@@ -204,9 +204,7 @@ test('teeth: each piece gets its toothed cut outline on the Cut layer; the norma
   await page.click('#kind button[data-kind="teeth"]');
   await page.fill('#count', '16');
   await page.waitForFunction(() => /^16 connectors/.test(document.querySelector('#stats').textContent));
-  await page.click('#apply-btn');
-  await page.waitForFunction(() => document.body.dataset.applied);
-  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', await page.textContent('#status'));
+  await applyOk(page);
   const all = items(host.snapshot()[0]);
   const outlines = ['A', 'B'].map((k) => all.find((i) => i.group === `D-former piece ${k} connectors` && i.name === 'outline'));
   assert.ok(outlines.every(Boolean), 'an outline per piece');

@@ -433,99 +433,170 @@ fn worst_reflex(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Finds the seam positions at `options.resolution` seam vertices, starting from the warm start
-/// or from coarser levels (32, 64, … seam vertices, each laid onto the last). Never panics; an
-/// input that cannot even be triangulated is an error.
-pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solution)> {
-    let n = options.resolution;
-    let mut levels = vec![n];
-    if options.warm.is_none() {
-        while levels[levels.len() - 1] / 2 >= COARSEST {
-            levels.push(levels[levels.len() - 1] / 2);
+/// Steps allowed to one refinement level of a cold solve while other saddle heights remain to
+/// be tried. A healthy level needs a few dozen steps (the whole 32→256 solve takes ~100–400);
+/// a level that needs more has been laid onto a wrong isometric branch (a near-tie in the flips
+/// tipped the wrong way), and the next start is cheaper than grinding it to `max_iterations`.
+const LEVEL_BUDGET: usize = 150;
+
+/// Strain below which a coarser level (relaxed only to a step of 1e-6 of the size) counts as
+/// solved: its solution is only a start for the next level, which polishes it.
+const LEVEL_STRAIN_TOL: f64 = 1e-5;
+
+/// The finer level's triangulation: the coarse one plus one ear per seam edge where it can be,
+/// else a fresh ear clipping.
+fn refine(tc: &[Triangulation; 2], pieces: &SeamPieces, p: usize) -> Result<Triangulation> {
+    if tc[p].len() * 2 == pieces.n {
+        if let Some(t) = tc[p].doubled(&pieces.flat[p].pts) {
+            return Ok(t);
         }
-        levels.reverse();
     }
-    let mut prev: Option<(SeamPieces, Vec<V3>, [Triangulation; 2])> = None;
-    let (mut iterations, mut flips) = (0, 0);
-    let mut converged = false;
-    for (li, &m) in levels.iter().enumerate() {
-        let pieces = glue.sample(m);
-        // The finer level keeps the coarse triangulation (plus one ear per seam edge) where it can.
-        let refine = |p: usize| -> Result<Triangulation> {
-            match &prev {
-                Some((_, _, tc)) if tc[p].len() * 2 == m => match tc[p].doubled(&pieces.flat[p].pts) {
-                    Some(t) => Ok(t),
-                    None => triangulate(&pieces, p),
-                },
-                _ => triangulate(&pieces, p),
-            }
-        };
-        let mut tri = [refine(0)?, refine(1)?];
-        let last = li + 1 == levels.len();
-        let step_tol = if last { STEP_TOL } else { 1e-6 };
-        let (x, r) = match (&prev, &options.warm) {
-            (Some((pc, xc, tc)), _) => {
-                let mut x = upsample(pc, xc, tc, &pieces);
-                let budget = options.max_iterations.saturating_sub(iterations).max(1);
-                let r = relax(&pieces, &mut x, &mut tri, budget, step_tol, Orientation::Kept);
-                (x, r)
-            }
-            (None, Some(w)) => {
-                // A warm start: a previous result's vertices, already outward (never mirrored).
-                let mut x = resample(w, m);
-                let budget = options.max_iterations.saturating_sub(iterations).max(1);
-                let r = relax(&pieces, &mut x, &mut tri, budget, step_tol, Orientation::Kept);
-                (x, r)
-            }
-            (None, None) => {
-                // Multistart on the coarsest level (cheap): the saddle's height decides which
-                // isometric branch Gauss–Newton falls into; keep the first converged one without a
-                // dent (coarse levels keep tiny reflex folds, see DENT_SINE, which the finer levels
-                // flip away; insisting on none here made every solve try all eight heights).
-                let starts = LIFTS.iter().map(|&lift| (initial_guess(&pieces, lift), Orientation::Free));
-                let mut best: Option<(Vec<V3>, Relaxed, [Triangulation; 2], f64)> = None;
-                for (mut x, orientation) in starts {
-                    let mut t = tri.clone();
-                    let budget = options.max_iterations.saturating_sub(iterations).clamp(1, ATTEMPT_BUDGET);
-                    let r = relax(&pieces, &mut x, &mut t, budget, step_tol, orientation);
-                    iterations += r.iterations;
-                    flips += r.flips;
-                    let strain = max_strain(&x, &bars(&pieces, &t));
-                    let good = r.converged && worst_reflex(&x, &t) <= DENT_SINE;
-                    if best.as_ref().is_none_or(|b| strain < b.3) {
-                        best = Some((x, r, t, strain));
-                    }
-                    if good || iterations >= options.max_iterations {
-                        break;
-                    }
-                }
-                let Some((x, mut r, t, _)) = best else {
-                    return Err(Error::Infeasible { reason: "No start could be tried.".into() });
-                };
-                tri = t;
-                r.iterations = 0;
-                r.flips = 0;
-                (x, r)
-            }
-        };
-        iterations += r.iterations;
-        flips += r.flips;
-        converged = r.converged;
-        prev = Some((pieces, x, tri));
+    triangulate(pieces, p)
+}
+
+/// Whether a solution is the convex isometric one: converged, without a dent.
+fn is_good(x: &[V3], tri: &[Triangulation; 2], converged: bool) -> bool {
+    converged && worst_reflex(x, tri) <= DENT_SINE
+}
+
+/// Finds the seam positions at `options.resolution` seam vertices, from the warm start or cold
+/// (see [`solve_cold`]). Never panics; an input that cannot even be triangulated is an error.
+pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solution)> {
+    let Some(w) = &options.warm else { return solve_cold(glue, options) };
+    // A warm start: a previous result's vertices, already outward (never mirrored).
+    let pieces = glue.sample(options.resolution);
+    let mut tri = [triangulate(&pieces, 0)?, triangulate(&pieces, 1)?];
+    let mut x = resample(w, pieces.n);
+    let r = relax(&pieces, &mut x, &mut tri, options.max_iterations.max(1), STEP_TOL, Orientation::Kept);
+    if is_good(&x, &tri, r.converged) {
+        let solution = Solution { x, tri, iterations: r.iterations, flips: r.flips, converged: true };
+        return Ok((pieces, solution));
     }
-    let Some((pieces, x, tri)) = prev else {
-        return Err(Error::Infeasible { reason: "No seam resolution to solve at.".into() });
-    };
     // A warm start that leads nowhere convex (e.g. the vertices of another shape, which can pull
     // the solver into an isometric but dented branch) is dropped for a cold solve rather than
     // returned. "Convex" allows the tiny reflex folds that coarse resolutions keep (the cold
     // solve keeps them too), not a dent.
-    if options.warm.is_some() && !(converged && worst_reflex(&x, &tri) <= DENT_SINE) {
-        let cold = SimulateOptions { warm: None, ..options.clone() };
-        let (p, mut sol) = solve(glue, &cold)?;
-        sol.iterations += iterations;
-        sol.flips += flips;
-        return Ok((p, sol));
+    let cold = SimulateOptions { warm: None, ..options.clone() };
+    let (p, mut sol) = solve_cold(glue, &cold)?;
+    sol.iterations += r.iterations;
+    sol.flips += r.flips;
+    Ok((p, sol))
+}
+
+/// Multistart on the coarsest level (cheap), trying the saddle heights `LIFTS[from..]`: the
+/// height decides which isometric branch Gauss–Newton falls into; the first converged one
+/// without a dent is kept (coarse levels keep tiny reflex folds, see DENT_SINE, which the finer
+/// levels flip away), else the one of least strain. Returns it, whether it is good, and the
+/// index of the next height to try (`LIFTS.len()` once a start failed to be good: all were tried).
+fn multistart(
+    pieces: &SeamPieces,
+    tri: &[Triangulation; 2],
+    from: usize,
+    step_tol: f64,
+    options: &SimulateOptions,
+    steps: &mut (usize, usize),
+) -> Option<(Vec<V3>, [Triangulation; 2], bool, usize)> {
+    let mut best: Option<(Vec<V3>, [Triangulation; 2], bool, usize, f64)> = None;
+    for (k, &lift) in LIFTS.iter().enumerate().skip(from) {
+        let (mut x, mut t) = (initial_guess(pieces, lift), tri.clone());
+        let budget = options.max_iterations.saturating_sub(steps.0).clamp(1, ATTEMPT_BUDGET);
+        let r = relax(pieces, &mut x, &mut t, budget, step_tol, Orientation::Free);
+        steps.0 += r.iterations;
+        steps.1 += r.flips;
+        let strain = max_strain(&x, &bars(pieces, &t));
+        let good = is_good(&x, &t, r.converged || (step_tol > STEP_TOL && strain <= LEVEL_STRAIN_TOL));
+        if good {
+            return Some((x, t, true, k + 1));
+        }
+        if best.as_ref().is_none_or(|b| strain < b.4) {
+            best = Some((x, t, r.converged, k, strain));
+        }
+        if steps.0 >= options.max_iterations {
+            break;
+        }
     }
-    Ok((pieces, Solution { x, tri, iterations, flips, converged }))
+    best.map(|(x, t, converged, _, _)| (x, t, converged, LIFTS.len()))
+}
+
+/// A cold solve: multistart on the coarsest level (32 seam vertices), then each finer level
+/// (64, 128, …) laid onto the last ([`upsample`]) and relaxed. Near-ties in the flips (chords
+/// between nearly coplanar triangles) can tip a level into a wrong isometric branch that does
+/// not converge; which way a tie tips depends on the last bits of libm (WASM and native
+/// differ). So a branch whose level needs more than [`LEVEL_BUDGET`] steps, or ends unconverged
+/// or dented, is abandoned and the whole coarse-to-fine path is retried from the next saddle
+/// height. When no height gives a good start on the coarsest level (at some offsets the 32-gon's
+/// only reachable branch is a collapsed one, strain ≈ 0.1), the ladder starts one level finer
+/// (64, …). The last height of the last rung (or the last of the step budget) runs to the end.
+/// The answer is the first good branch, else the best one that reached the finest level
+/// (converged first, then least strain). Deterministic: heights and rungs in a fixed order.
+fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solution)> {
+    let n = options.resolution;
+    let mut levels = vec![n];
+    while levels[levels.len() - 1] / 2 >= COARSEST {
+        levels.push(levels[levels.len() - 1] / 2);
+    }
+    levels.reverse();
+    let mut samples: Vec<SeamPieces> = levels.iter().map(|&m| glue.sample(m)).collect();
+    let mut steps = (0usize, 0usize);
+    let mut best: Option<(Vec<V3>, [Triangulation; 2], bool, f64)> = None;
+    // Coarsest level of the ladder: 32 first; when no height gives a good start there (a
+    // polygon that coarse can make a wrong branch the only one within reach), 64, and so on.
+    'ladder: for first in 0..levels.len() {
+        let coarse_tri = [triangulate(&samples[first], 0)?, triangulate(&samples[first], 1)?];
+        let coarse_tol = if first + 1 == levels.len() { STEP_TOL } else { 1e-6 };
+        let final_rung = first + 1 == levels.len();
+        let mut from = 0;
+        while from < LIFTS.len() {
+            let Some((mut x, mut tri, mut converged, next)) =
+                multistart(&samples[first], &coarse_tri, from, coarse_tol, options, &mut steps)
+            else {
+                break;
+            };
+            from = next;
+            let out_of_steps = steps.0 >= options.max_iterations;
+            if from >= LIFTS.len() && !final_rung && !out_of_steps {
+                // No good start on this rung: climb to the next one.
+                continue 'ladder;
+            }
+            let mut abandoned = false;
+            for li in first + 1..levels.len() {
+                let (pc, pf) = (&samples[li - 1], &samples[li]);
+                let mut tf = [refine(&tri, pf, 0)?, refine(&tri, pf, 1)?];
+                let mut xf = upsample(pc, &x, &tri, pf);
+                let remaining = options.max_iterations.saturating_sub(steps.0);
+                let retry = (from < LIFTS.len() || !final_rung) && remaining > 0;
+                let budget = if retry { remaining.min(LEVEL_BUDGET) } else { remaining.max(1) };
+                let last = li + 1 == levels.len();
+                let r = relax(pf, &mut xf, &mut tf, budget, if last { STEP_TOL } else { 1e-6 }, Orientation::Kept);
+                steps.0 += r.iterations;
+                steps.1 += r.flips;
+                (x, tri, converged) = (xf, tf, r.converged);
+                let loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
+                if retry && !is_good(&x, &tri, converged || loose) {
+                    abandoned = true;
+                    break;
+                }
+            }
+            if abandoned {
+                continue;
+            }
+            let pieces = &samples[levels.len() - 1];
+            if is_good(&x, &tri, converged) {
+                best = Some((x, tri, true, 0.0));
+                break 'ladder;
+            }
+            let strain = max_strain(&x, &bars(pieces, &tri));
+            if best.as_ref().is_none_or(|b| (converged, -strain) > (b.2, -b.3)) {
+                best = Some((x, tri, converged, strain));
+            }
+            if steps.0 >= options.max_iterations {
+                break 'ladder;
+            }
+        }
+    }
+    let Some((x, tri, converged, _)) = best else {
+        return Err(Error::Infeasible { reason: "No start could be tried.".into() });
+    };
+    let pieces = samples.pop().expect("at least one level");
+    Ok((pieces, Solution { x, tri, iterations: steps.0, flips: steps.1, converged }))
 }

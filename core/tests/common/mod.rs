@@ -67,7 +67,7 @@ fn speed(p: [P; 4]) -> impl Fn(f64) -> f64 {
 /// compensated summation. Independent of kurbo and of the crate.
 pub fn cubic_len_truth(p: [P; 4], panels: usize) -> f64 {
     let gl = gauss_legendre(20);
-    let speed = speed(p);
+    let speed = &speed(p);
     let h = 1.0 / panels as f64;
     ksum((0..panels).flat_map(|k| {
         let a = k as f64 * h;
@@ -81,7 +81,7 @@ pub fn cubic_len_truth(p: [P; 4], panels: usize) -> f64 {
 /// end point, which any fixed panel grid can miss; bisection resolves it. Independent of kurbo.
 pub fn cubic_len_adaptive(p: [P; 4]) -> f64 {
     let gl = gauss_legendre(20);
-    let speed = speed(p);
+    let speed = &speed(p);
     let panel = |a: f64, b: f64| ksum(gl.iter().map(|&(x, w)| 0.5 * (b - a) * w * speed(a + 0.5 * (b - a) * (x + 1.0))));
     let scale = cubic_len_truth(p, 16).abs().max(f64::MIN_POSITIVE);
     fn rec(a: f64, b: f64, whole: f64, depth: u32, tol: f64, panel: &dyn Fn(f64, f64) -> f64, out: &mut Vec<f64>) {
