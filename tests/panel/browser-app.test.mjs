@@ -89,7 +89,11 @@ test('open SVG files with transforms and viewBox units: perimeters read in mm', 
     { name: 'rect.svg', mimeType: 'image/svg+xml', buffer: Buffer.from(rect) },
     { name: 'tri.svg', mimeType: 'image/svg+xml', buffer: Buffer.from(poly) },
   ]);
-  await page.waitForFunction(() => document.querySelectorAll('#measure-table tr').length >= 2);
+  // Regression (CI race): the app starts with a sample loaded, so "two rows" was true before the files were read.
+  await page.waitForFunction(() => {
+    const names = [...document.querySelectorAll('#measure-table td.name')].map((t) => t.textContent).join(' ');
+    return /rect/.test(names) && /tri/.test(names);
+  });
   const perims = await page.$$eval('#measure-table tr td.perimeter', (tds) => tds.map((t) => t.textContent));
   assert.equal(perims[0], '280.00 mm', `rect 40×30 scaled ×2: wanted 280.00 mm, got ${perims[0]}`);
   assert.equal(perims[1], '120.00 mm', `3-4-5 triangle of 30/40/50 mm: wanted 120.00 mm, got ${perims[1]}`);
