@@ -86,8 +86,8 @@ impl fmt::Display for Error {
             Error::Option { name, reason } => write!(f, "Option `{name}`: {reason}"),
             Error::PerimeterMismatch { a, b } => write!(
                 f,
-                "The two pieces have different perimeters ({a} and {b}, {:.3e} relative). Normalize them first so they can be stitched edge to edge.",
-                (a - b).abs() / a.abs().max(b.abs())
+                "The two pieces have different perimeters ({a} and {b}; they differ by {} %). Normalize them first so they can be stitched edge to edge.",
+                two_significant(100.0 * (a - b).abs() / a.abs().max(b.abs()))
             ),
             Error::Infeasible { reason } => write!(f, "{reason}"),
             Error::SvgSyntax { position, near, problem } if near.is_empty() => {
@@ -103,3 +103,32 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+/// `x` rounded to two significant digits, for messages. Printed with `{}` (shortest round-trip),
+/// so `9.8e-5` shows as `0.000098`: dividing the rounded integer by an exact power of ten gives the
+/// double nearest the two-digit decimal. Users read "differ by 0.012 %" more easily than an
+/// exponent.
+pub fn two_significant(x: f64) -> f64 {
+    if !x.is_finite() || x == 0.0 {
+        return x;
+    }
+    let k = 1 - x.abs().log10().floor() as i32; // digits to keep after the decimal point
+    if !(-22..=22).contains(&k) {
+        return x;
+    }
+    let p = 10f64.powi(k.abs()); // exact for |k| ≤ 22
+    if k >= 0 { (x * p).round() / p } else { (x / p).round() * p }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::two_significant;
+
+    #[test]
+    fn two_significant_prints_two_digits() {
+        for (x, want) in [(9.8123e-5, "0.000098"), (0.0123, "0.012"), (1.0, "1"), (12.49, "12"), (98765.0, "99000"), (0.0996, "0.1")] {
+            let got = two_significant(x).to_string();
+            assert_eq!(got, want, "two_significant({x}): wanted {want}, got {got}");
+        }
+    }
+}

@@ -17,6 +17,7 @@ pub mod contour;
 pub mod error;
 pub mod measure;
 pub mod normalize;
+pub mod order;
 pub mod simulate;
 pub mod svg;
 pub mod validate;

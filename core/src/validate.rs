@@ -250,7 +250,7 @@ fn cone(c: &CubicBez, j: Point) -> Option<(Vec2, f64)> {
     if angles.is_empty() {
         return None;
     }
-    angles.sort_by(f64::total_cmp);
+    crate::order::sort_f64(&mut angles);
     // The widest gap between consecutive directions (cyclically) is where the cone is not.
     let tau = std::f64::consts::TAU;
     let (first, last) = (*angles.first()?, *angles.last()?);

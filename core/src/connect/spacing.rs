@@ -37,8 +37,7 @@ pub fn connector_positions(start: f64, slide: f64, perimeter: f64, count: usize)
 /// target (see the module comment).
 pub fn locate_many(table: &ArcTable, targets: &[f64]) -> Vec<Station> {
     let wrapped: Vec<f64> = targets.iter().map(|&s| table.wrap(s)).collect();
-    let mut order: Vec<usize> = (0..targets.len()).collect();
-    order.sort_by(|&a, &b| wrapped[a].total_cmp(&wrapped[b]));
+    let order = crate::order::argsort(&wrapped);
     let n = table.segment_count();
     let mut out = vec![
         Station { s: 0.0, seg: 0, t: 0.0, point: Point::ZERO, tangent: Vec2::new(1.0, 0.0) };

@@ -81,7 +81,7 @@ impl Edge {
 
     /// Indices of the segments bucketed in the cells that the square `p ± limit` touches, in
     /// `out` (cleared first; a segment spanning several cells is listed once per cell).
-    fn near(&self, p: Point, limit: f64, out: &mut Vec<u32>) {
+    fn near(&self, p: Point, limit: f64, out: &mut Vec<usize>) {
         out.clear();
         let (Some(cols), Some(rows)) = (
             self.cell_range(p.x - limit, p.x + limit, self.origin.x, self.cols),
@@ -91,7 +91,7 @@ impl Edge {
         };
         for r in rows.0..=rows.1 {
             for c in cols.0..=cols.1 {
-                out.extend_from_slice(&self.grid[r * self.cols + c]);
+                out.extend(self.grid[r * self.cols + c].iter().map(|&i| i as usize));
             }
         }
     }
@@ -102,11 +102,10 @@ impl Edge {
     pub fn distance_below(&self, p: Point, limit: f64) -> Option<f64> {
         let mut ids = Vec::new();
         self.near(p, limit, &mut ids);
-        ids.sort_unstable();
-        ids.dedup();
+        crate::order::sort_dedup(&mut ids);
         let mut best: Option<f64> = None;
         for i in ids {
-            if let Some(d) = self.segment_distance_below(i as usize, p, limit) {
+            if let Some(d) = self.segment_distance_below(i, p, limit) {
                 if best.is_none_or(|b| d < b) {
                     best = Some(d);
                 }
@@ -118,9 +117,9 @@ impl Edge {
     /// Whether the outline comes closer than `limit` to `p`: the same answer as
     /// `distance_below(p, limit).is_some()`, stopping at the first segment that does.
     /// `scratch` is reused between calls to save an allocation per query.
-    pub fn comes_within(&self, p: Point, limit: f64, scratch: &mut Vec<u32>) -> bool {
+    pub fn comes_within(&self, p: Point, limit: f64, scratch: &mut Vec<usize>) -> bool {
         self.near(p, limit, scratch);
-        scratch.iter().any(|&i| self.segment_distance_below(i as usize, p, limit).is_some())
+        scratch.iter().any(|&i| self.segment_distance_below(i, p, limit).is_some())
     }
 
     /// Exact distance from `p` to segment `i` when it is below `limit`. The exact (and costly)
@@ -235,8 +234,7 @@ fn hull_distance_sq(c: &CubicBez, p: Point) -> f64 {
 pub fn holes(piece: &str, centers: &[Point], radius: f64, edge: &Edge, inside: bool) -> Vec<String> {
     let mut out = Vec::new();
     // Overlaps: sweep over the holes sorted by x; only pairs closer than 2r in x can overlap.
-    let mut order: Vec<usize> = (0..centers.len()).collect();
-    order.sort_by(|&a, &b| centers[a].x.total_cmp(&centers[b].x));
+    let order = crate::order::argsort(&centers.iter().map(|c| c.x).collect::<Vec<_>>());
     let mut pairs = Vec::new();
     for (i, &a) in order.iter().enumerate() {
         for &b in &order[i + 1..] {
@@ -249,7 +247,7 @@ pub fn holes(piece: &str, centers: &[Point], radius: f64, edge: &Edge, inside: b
             }
         }
     }
-    pairs.sort();
+    crate::order::sort_dedup_pairs(&mut pairs);
     if !pairs.is_empty() {
         let names: Vec<String> = pairs.iter().map(|(a, b)| format!("{} and {}", a + 1, b + 1)).collect();
         out.push(format!(
@@ -301,10 +299,9 @@ pub fn collisions(segs: &[CubicBez], tags: &[usize], per_seg: usize) -> Vec<(usi
         }
     }
     let m = chords.len();
-    let mut order: Vec<usize> = (0..m).collect();
     let min_x = |i: usize| chords[i].0.x.min(chords[i].1.x);
     let max_x = |i: usize| chords[i].0.x.max(chords[i].1.x);
-    order.sort_by(|&a, &b| min_x(a).total_cmp(&min_x(b)));
+    let order = crate::order::argsort(&(0..m).map(min_x).collect::<Vec<_>>());
     let mut found = Vec::new();
     for (oi, &i) in order.iter().enumerate() {
         for &j in &order[oi + 1..] {
@@ -321,8 +318,7 @@ pub fn collisions(segs: &[CubicBez], tags: &[usize], per_seg: usize) -> Vec<(usi
             }
         }
     }
-    found.sort();
-    found.dedup();
+    crate::order::sort_dedup_pairs(&mut found);
     found
 }
 

@@ -62,8 +62,7 @@ impl NormalEquations {
             adj[j].push(i);
         }
         for a in &mut adj {
-            a.sort_unstable();
-            a.dedup();
+            crate::order::sort_dedup(a);
         }
         let n3 = 3 * n;
         let mut base = Vec::with_capacity(n);

@@ -1,0 +1,61 @@
+//! Sorting, through as few instantiations of std's sort as possible.
+//!
+//! Every `sort_by` with its own closure is a separate copy of std's driftsort or ipnsort in the
+//! `.wasm` (4–9 KB each; nine of them were an eighth of the module). The crate sorts only three
+//! kinds of things — `f64` keys, indices and index pairs — so every call site goes through one of
+//! the three functions below, each a single `sort_unstable*` instantiation.
+
+/// The permutation that sorts `keys` ascending by [`f64::total_cmp`]; equal keys keep their
+/// index order (a stable order, from an unstable sort over `(key, index)` pairs, which are all
+/// distinct).
+pub fn argsort(keys: &[f64]) -> Vec<usize> {
+    let mut pairs: Vec<(f64, usize)> = keys.iter().copied().zip(0..).collect();
+    pairs.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    pairs.into_iter().map(|(_, i)| i).collect()
+}
+
+/// Sorts `v` ascending by [`f64::total_cmp`].
+pub fn sort_f64(v: &mut Vec<f64>) {
+    let sorted: Vec<f64> = argsort(v).into_iter().map(|i| v[i]).collect();
+    *v = sorted;
+}
+
+/// Sorts indices ascending and removes repeats.
+pub fn sort_dedup(v: &mut Vec<usize>) {
+    v.sort_unstable();
+    v.dedup();
+}
+
+/// Sorts index pairs lexicographically and removes repeats.
+pub fn sort_dedup_pairs(v: &mut Vec<(usize, usize)>) {
+    v.sort_unstable();
+    v.dedup();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn argsort_is_stable_and_orders_by_total_cmp() {
+        let keys = [3.0, -0.0, 1.0, 0.0, 1.0, f64::NEG_INFINITY, -1.0];
+        let got = argsort(&keys);
+        // total_cmp puts -0.0 before 0.0; the two 1.0 keep their index order.
+        assert_eq!(got, vec![5, 6, 1, 3, 2, 4, 0], "wanted the stable total order");
+        let mut v = keys.to_vec();
+        sort_f64(&mut v);
+        let mut want = keys.to_vec();
+        want.sort_by(f64::total_cmp);
+        assert_eq!(v.iter().map(|x| x.to_bits()).collect::<Vec<_>>(), want.iter().map(|x| x.to_bits()).collect::<Vec<_>>());
+    }
+
+    #[test]
+    fn dedup_helpers_sort_and_remove_repeats() {
+        let mut v = vec![4, 1, 4, 0, 1];
+        sort_dedup(&mut v);
+        assert_eq!(v, vec![0, 1, 4]);
+        let mut p = vec![(2, 3), (0, 5), (2, 3), (0, 1)];
+        sort_dedup_pairs(&mut p);
+        assert_eq!(p, vec![(0, 1), (0, 5), (2, 3)]);
+    }
+}
