@@ -52,6 +52,16 @@ pub fn at_origin(c: &CubicBez) -> CubicBez {
 /// rounding per coordinate), then measured by [`arclen_unit`]; at unit scale no square can
 /// overflow, so speeds are plain square roots.
 pub fn segment_len(c: &CubicBez, accuracy: f64) -> f64 {
+    segment_len_with(c, accuracy, None)
+}
+
+/// [`segment_len`] with the fixed-rule shortcut of [`Quadrature`], for loops over many segments
+/// at one accuracy.
+pub fn segment_len_q(c: &CubicBez, q: &Quadrature) -> f64 {
+    segment_len_with(c, q.accuracy, Some(q))
+}
+
+fn segment_len_with(c: &CubicBez, accuracy: f64, q: Option<&Quadrature>) -> f64 {
     let poly = control_polygon_len(c);
     if poly == 0.0 {
         return 0.0;
@@ -68,12 +78,95 @@ pub fn segment_len(c: &CubicBez, accuracy: f64) -> f64 {
     let k = 1.0 / poly;
     let o = c.p0;
     let u = CubicBez::new(Point::ORIGIN, ((c.p1 - o) * k).to_point(), ((c.p2 - o) * k).to_point(), ((c.p3 - o) * k).to_point());
+    if let Some(len) = q.and_then(|q| q.fixed_rule(&u)) {
+        return poly * len;
+    }
     poly * arclen_unit(&u, accuracy, 0, Some(1.0))
 }
 
 /// Perimeter of a closed outline to relative `accuracy` (the sum of [`segment_len`]).
 pub fn perimeter(contour: &Contour, accuracy: f64) -> f64 {
-    contour.segments().map(|c| segment_len(&c, accuracy)).sum()
+    let q = Quadrature::new(accuracy);
+    contour.segments().map(|c| segment_len_q(&c, &q)).sum()
+}
+
+/// An a-priori error bound that lets a well-behaved segment skip the adaptive error estimate and
+/// go straight to a 4-, 6- or 8-point Gauss–Legendre rule.
+///
+/// With `B'/3 = q(x) = dm + dm1·x + dm2·x²` on `x ∈ [−1, 1]` (see [`gl_core`]) the length is
+/// `1.5 ∫ |q(x)| dx`. Every point of the Bernstein ellipse `E_ρ` has `|z| ≤ R = (ρ + 1/ρ)/2`,
+/// so `|q(z) − dm| ≤ e·|dm|` with `e·|dm| = |dm1|·R + |dm2|·R²`. If `e ≤ E = √1.5 − 1` then
+/// `q·q / |dm|²` stays in the disc `|w − 1| ≤ ½`, where the principal square root is analytic and
+/// at most `√1.5`: `|q|` continues analytically to `E_ρ` with `|f| ≤ M = √1.5·|dm| ≤ √1.5` (at
+/// unit control-polygon length `|dm| ≤ 1`, `dm` being a convex combination of the legs).
+/// Gauss quadrature with `n` points then errs by at most `(64/15)·M·ρ^{−2(n−1)}/(ρ² − 1)`
+/// (Trefethen, *Approximation Theory and Approximation Practice*, Thm 19.3, read with `n − 1`
+/// for `n` to stay on the safe side of its indexing), so the length errs by at most `K·ρ^{−2n}`
+/// with `K = 1.5·(64/15)·√1.5·ρ²/(ρ² − 1) < 16` for `ρ ≥ √2`. A rule is used when that is below
+/// `accuracy`. The test `2(|dm1|²R² + |dm2|²R⁴) ≤ E²|dm|²` implies `e ≤ E` (as
+/// `(a + b)² ≤ 2(a² + b²)`) and needs no square root. Anything else takes the adaptive path.
+#[derive(Debug, Clone, Copy)]
+pub struct Quadrature {
+    accuracy: f64,
+    /// `(R², R⁴)` for the 4-, 6- and 8-point rules.
+    radii: [(f64, f64); 3],
+}
+
+impl Quadrature {
+    const K: f64 = 16.0;
+    /// `E² = (√1.5 − 1)²`.
+    const E2: f64 = 0.050_510_257_216_821_9;
+
+    pub fn new(accuracy: f64) -> Self {
+        let radius = |n: i32| {
+            let rho = (Self::K / accuracy).powf(0.5 / n as f64).max(std::f64::consts::SQRT_2);
+            let r = 0.5 * (rho + 1.0 / rho);
+            (r * r, r * r * r * r)
+        };
+        Quadrature { accuracy, radii: [radius(4), radius(6), radius(8)] }
+    }
+
+    /// The length of a unit-scale cubic (control polygon of length 1) by the smallest fixed rule
+    /// whose a-priori bound meets the accuracy, or `None`.
+    fn fixed_rule(&self, u: &CubicBez) -> Option<f64> {
+        use kurbo::common::{GAUSS_LEGENDRE_COEFFS_4, GAUSS_LEGENDRE_COEFFS_6, GAUSS_LEGENDRE_COEFFS_8_HALF};
+        let (dm, dm1, dm2) = midpoint_form(u);
+        let sq = |v: Vec2| v.x * v.x + v.y * v.y;
+        let (a, b, d) = (sq(dm1), sq(dm2), Self::E2 * sq(dm));
+        let fits = |(r2, r4): (f64, f64)| 2.0 * (a * r2 + b * r4) <= d;
+        if !fits(self.radii[2]) {
+            return None;
+        }
+        if fits(self.radii[0]) {
+            return Some(gl_full(GAUSS_LEGENDRE_COEFFS_4, dm, dm1, dm2));
+        }
+        if fits(self.radii[1]) {
+            return Some(gl_full(GAUSS_LEGENDRE_COEFFS_6, dm, dm1, dm2));
+        }
+        Some(gl_core(GAUSS_LEGENDRE_COEFFS_8_HALF, dm, dm1, dm2))
+    }
+}
+
+/// `B'(t)/3` of a cubic as `dm + dm1·x + dm2·x²` with `t = (1 + x)/2` (kurbo's arclen form).
+#[inline]
+fn midpoint_form(c: &CubicBez) -> (Vec2, Vec2, Vec2) {
+    let d01 = c.p1 - c.p0;
+    let d12 = c.p2 - c.p1;
+    let d23 = c.p3 - c.p2;
+    let dd1 = d12 - d01;
+    let dd2 = d23 - d12;
+    (0.25 * (d01 + d23) + 0.5 * d12, 0.5 * (dd2 + dd1), 0.25 * (dd2 - dd1))
+}
+
+/// `1.5 Σ wᵢ |q(xᵢ)|` over a full Gauss–Legendre table on `[−1, 1]`.
+#[inline]
+fn gl_full(coeffs: &[(f64, f64)], dm: Vec2, dm1: Vec2, dm2: Vec2) -> f64 {
+    let mut sum = 0.0;
+    for &(wi, xi) in coeffs {
+        let p = dm + dm1 * xi + dm2 * (xi * xi);
+        sum += wi * (p.x * p.x + p.y * p.y).sqrt();
+    }
+    1.5 * sum
 }
 
 /// ∫₀¹ |B'(t)| dt by Gauss–Legendre on node pairs symmetric about t = ½, with
@@ -151,8 +244,9 @@ impl ArcTable {
         let mut cum = Vec::with_capacity(segs.len() + 1);
         let mut total = 0.0;
         cum.push(0.0);
+        let q = Quadrature::new(accuracy);
         for c in &segs {
-            total += segment_len(c, accuracy);
+            total += segment_len_q(c, &q);
             cum.push(total);
         }
         ArcTable { segs, cum, accuracy }
@@ -278,6 +372,29 @@ mod tests {
         assert!((p - Point::new(3.0, 2.0)).hypot() < 1e-12, "got {p:?}");
         let p = t.point_at(12.0 + 1.5);
         assert!((p - Point::new(1.5, 0.0)).hypot() < 1e-12, "wrapped: got {p:?}");
+    }
+
+    /// Each fixed rule of the shortcut is reachable at the default accuracy: a nearly straight arc
+    /// takes 4 points, gentle bends 6 or 8, a sharp one goes to the adaptive path.
+    #[test]
+    fn every_fixed_rule_is_taken_somewhere() {
+        let q = Quadrature::new(DEFAULT_ACCURACY);
+        let arc = |phi: f64| {
+            let h = 4.0 / 3.0 * (phi / 4.0).tan();
+            let p3 = Point::new(phi.cos(), phi.sin());
+            let c = CubicBez::new(Point::new(1.0, 0.0), Point::new(1.0, h), p3 + Vec2::new(h * phi.sin(), -h * phi.cos()), p3);
+            let k = 1.0 / control_polygon_len(&c);
+            CubicBez::new(Point::ORIGIN, ((c.p1 - c.p0) * k).to_point(), ((c.p2 - c.p0) * k).to_point(), ((c.p3 - c.p0) * k).to_point())
+        };
+        let rule = |phi: f64| {
+            let u = arc(phi);
+            let (dm, dm1, dm2) = midpoint_form(&u);
+            let sq = |v: Vec2| v.x * v.x + v.y * v.y;
+            let fits = |(r2, r4): (f64, f64)| 2.0 * (sq(dm1) * r2 + sq(dm2) * r4) <= Quadrature::E2 * sq(dm);
+            q.fixed_rule(&u).map(|_| q.radii.iter().position(|&r| fits(r)).map_or(0, |i| [4, 6, 8][i]))
+        };
+        let got: Vec<_> = [1e-3, 2e-2, 5e-2, 0.5].into_iter().map(rule).collect();
+        assert_eq!(got, vec![Some(4), Some(6), Some(8), None], "rule by turning angle 1e-3, 2e-2, 5e-2, 0.5 rad");
     }
 
     #[test]

@@ -198,3 +198,50 @@ fn reference_quadrature_is_converged() {
         }
     }
 }
+
+/// The fixed-rule shortcut (`arclen::Quadrature`) skips the adaptive error estimate on gently
+/// curved segments. Sweep its whole range — arcs turning from 1e-4 rad to 1 rad, with even and
+/// uneven handles and an S-bend, and near-cusps — at every accuracy from 1e-4 to 1e-15: each segment must stay
+/// within `accuracy ×` its control-polygon length of the independent reference.
+#[test]
+fn fixed_rule_shortcut_meets_its_bound_per_segment() {
+    use dformer::arclen::{control_polygon_len, segment_len_q, Quadrature};
+    use kurbo::{CubicBez, Point};
+    let mut cubics = Vec::new();
+    for k in 0..=40 {
+        let phi = 1e-4 * 10f64.powf(k as f64 / 10.0); // 1e-4 … 1 rad
+        let h = 4.0 / 3.0 * (phi / 4.0).tan();
+        for (ha, hb, bend) in [(1.0, 1.0, 1.0), (0.3, 1.7, 1.0), (1.0, 1.0, -1.0)] {
+            let p0 = [1.0, 0.0];
+            let p3 = [phi.cos(), phi.sin()];
+            let p1 = [1.0, h * ha];
+            let p2 = [p3[0] + h * hb * phi.sin() * bend, p3[1] - h * hb * phi.cos() * bend];
+            cubics.push([p0, p1, p2, p3]);
+        }
+    }
+    // Near-cusps: B'/3 = (1 + (1 − c)x, ε) on x ∈ [−1, 1] nearly vanishes just beyond t = 0, the
+    // singularity that makes fixed rules slow to converge; the shortcut must decline these.
+    for c in [0.05, 0.2, 0.5, 0.8] {
+        for eps in [1e-1, 1e-2, 1e-4] {
+            let (d01, d12, d23) = ([c, eps], [1.0, eps], [2.0 - c, eps]);
+            let p1 = d01;
+            let p2 = [p1[0] + d12[0], p1[1] + d12[1]];
+            cubics.push([[0.0, 0.0], p1, p2, [p2[0] + d23[0], p2[1] + d23[1]]]);
+        }
+    }
+    for e in 4..=15 {
+        let acc = 10f64.powi(-e);
+        let q = Quadrature::new(acc);
+        for p in &cubics {
+            let pt = |i: usize| Point::new(p[i][0], p[i][1]);
+            let c = CubicBez::new(pt(0), pt(1), pt(2), pt(3));
+            let (got, want) = (segment_len_q(&c, &q), cubic_len_adaptive(*p));
+            let allowed = acc * control_polygon_len(&c) + 4.0 * f64::EPSILON * want;
+            assert!(
+                (got - want).abs() <= allowed,
+                "cubic {p:?} at accuracy {acc:e}: wanted {want:.17e}, got {got:.17e} (error {:.2e} > {allowed:.2e})",
+                (got - want).abs()
+            );
+        }
+    }
+}
