@@ -92,3 +92,20 @@ test('Normalize refuses bad selections and bad input, and Cancel changes nothing
   check({ shapes: shapes() }, answer(4, '-5'), /Enter an exact length greater than 0/);
   check({ shapes: shapes() }, answer(0, '', 0, false), null);
 });
+
+// The two scripts are self-contained on purpose (each must work when copied alone into the
+// Scripts folder), so they carry the same helpers twice; this keeps the copies from drifting.
+test('both File > Scripts scripts carry identical unit and selection helpers', async () => {
+  const { readFileSync } = await import('node:fs');
+  const { fileURLToPath } = await import('node:url');
+  const read = (f) => readFileSync(fileURLToPath(new URL(`../../illustrator-scripts/${f}`, import.meta.url)), 'utf8');
+  const helper = (src, name) => {
+    const start = src.indexOf(`  function ${name}(`);
+    assert.ok(start > 0, `function ${name} not found`);
+    const end = src.indexOf('\n  }\n', start);
+    return src.slice(start, end);
+  };
+  for (const name of ['unitsOf', 'selectedPaths']) {
+    assert.equal(helper(read(NORMALIZE), name), helper(read(MEASURE), name), `${name} differs between the two scripts`);
+  }
+});
