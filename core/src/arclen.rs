@@ -80,7 +80,7 @@ fn segment_len_with(c: &CubicBez, accuracy: f64, q: Option<&Quadrature>) -> f64 
     let k = 1.0 / poly;
     let o = c.p0;
     let u = CubicBez::new(Point::ORIGIN, ((c.p1 - o) * k).to_point(), ((c.p2 - o) * k).to_point(), ((c.p3 - o) * k).to_point());
-    if let Some(len) = q.and_then(|q| q.fixed_rule(&u)) {
+    if let Some((_, len)) = q.and_then(|q| q.fixed_rule(&u)) {
         return poly * len;
     }
     poly * arclen_unit(&u, accuracy, 0, Some(1.0))
@@ -128,9 +128,10 @@ impl Quadrature {
         Quadrature { accuracy, radii: [radius(4), radius(6), radius(8)] }
     }
 
-    /// The length of a unit-scale cubic (control polygon of length 1) by the smallest fixed rule
-    /// whose a-priori bound meets the accuracy, or `None`.
-    fn fixed_rule(&self, u: &CubicBez) -> Option<f64> {
+    /// The number of points of the smallest fixed rule whose a-priori bound meets the accuracy
+    /// for a unit-scale cubic (control polygon of length 1), and the length by that rule; or
+    /// `None`.
+    fn fixed_rule(&self, u: &CubicBez) -> Option<(usize, f64)> {
         use kurbo::common::{GAUSS_LEGENDRE_COEFFS_4, GAUSS_LEGENDRE_COEFFS_6, GAUSS_LEGENDRE_COEFFS_8_HALF};
         let (dm, dm1, dm2) = midpoint_form(u);
         let sq = |v: Vec2| v.x * v.x + v.y * v.y;
@@ -140,12 +141,12 @@ impl Quadrature {
             return None;
         }
         if fits(self.radii[0]) {
-            return Some(gl_full(GAUSS_LEGENDRE_COEFFS_4, dm, dm1, dm2));
+            return Some((4, gl_full(GAUSS_LEGENDRE_COEFFS_4, dm, dm1, dm2)));
         }
         if fits(self.radii[1]) {
-            return Some(gl_full(GAUSS_LEGENDRE_COEFFS_6, dm, dm1, dm2));
+            return Some((6, gl_full(GAUSS_LEGENDRE_COEFFS_6, dm, dm1, dm2)));
         }
-        Some(gl_core(GAUSS_LEGENDRE_COEFFS_8_HALF, dm, dm1, dm2))
+        Some((8, gl_core(GAUSS_LEGENDRE_COEFFS_8_HALF, dm, dm1, dm2)))
     }
 }
 
@@ -198,17 +199,9 @@ fn arclen_unit(c: &CubicBez, accuracy: f64, depth: usize, poly: Option<f64>) -> 
         GAUSS_LEGENDRE_COEFFS_16_HALF, GAUSS_LEGENDRE_COEFFS_24_HALF, GAUSS_LEGENDRE_COEFFS_8,
         GAUSS_LEGENDRE_COEFFS_8_HALF,
     };
-    let d03 = c.p3 - c.p0;
-    let d01 = c.p1 - c.p0;
-    let d12 = c.p2 - c.p1;
-    let d23 = c.p3 - c.p2;
     let sq = |v: Vec2| (v.x * v.x + v.y * v.y).sqrt();
-    let lp_lc = poly.unwrap_or_else(|| sq(d01) + sq(d12) + sq(d23)) - sq(d03);
-    let dd1 = d12 - d01;
-    let dd2 = d23 - d12;
-    let dm = 0.25 * (d01 + d23) + 0.5 * d12;
-    let dm1 = 0.5 * (dd2 + dd1);
-    let dm2 = 0.25 * (dd2 - dd1);
+    let lp_lc = poly.unwrap_or_else(|| sq(c.p1 - c.p0) + sq(c.p2 - c.p1) + sq(c.p3 - c.p2)) - sq(c.p3 - c.p0);
+    let (dm, dm1, dm2) = midpoint_form(c);
     let est: f64 = GAUSS_LEGENDRE_COEFFS_8
         .iter()
         .map(|&(wi, xi)| {
@@ -388,13 +381,7 @@ mod tests {
             let k = 1.0 / control_polygon_len(&c);
             CubicBez::new(Point::ORIGIN, ((c.p1 - c.p0) * k).to_point(), ((c.p2 - c.p0) * k).to_point(), ((c.p3 - c.p0) * k).to_point())
         };
-        let rule = |phi: f64| {
-            let u = arc(phi);
-            let (dm, dm1, dm2) = midpoint_form(&u);
-            let sq = |v: Vec2| v.x * v.x + v.y * v.y;
-            let fits = |(r2, r4): (f64, f64)| 2.0 * (sq(dm1) * r2 + sq(dm2) * r4) <= Quadrature::E2 * sq(dm);
-            q.fixed_rule(&u).map(|_| q.radii.iter().position(|&r| fits(r)).map_or(0, |i| [4, 6, 8][i]))
-        };
+        let rule = |phi: f64| q.fixed_rule(&arc(phi)).map(|(points, _)| points);
         let got: Vec<_> = [1e-3, 2e-2, 5e-2, 0.5].into_iter().map(rule).collect();
         assert_eq!(got, vec![Some(4), Some(6), Some(8), None], "rule by turning angle 1e-3, 2e-2, 5e-2, 0.5 rad");
     }
