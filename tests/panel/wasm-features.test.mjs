@@ -68,3 +68,13 @@ test('the built extension requires the CEP its WebAssembly needs (manifest writt
   assert.equal(runtime, `${cep.cep}.0`, `CSXS runtime: wanted ${cep.cep}.0 for Chromium ${minChromium}, got ${runtime}`);
   if (cep.illustrator) assert.match(xml, new RegExp(`<Host Name="ILST" Version="\\[${cep.illustrator.replace('.', '\\.')},`));
 });
+
+// Regression: a solver dependency (faer) once put WebAssembly SIMD into the module, which raised the
+// panel's minimum from Illustrator 22 (CEP 8, Chromium 57) to CEP 12. The issue asks for 22+.
+test('the panel WebAssembly is pure MVP: the extension loads in Illustrator 22 (CEP 8)', (t) => {
+  const wasm = join(panelDir, 'wasm', 'dformer_bg.wasm');
+  if (!existsSync(wasm)) return t.skip('run `node uxp-panel/build.mjs` first');
+  const scan = scanWasmFeatures(readFileSync(wasm));
+  assert.equal(scan.minChromium, 57, `wanted Chromium 57 (CEP 8), got ${scan.minChromium}: ${JSON.stringify(scan.features ?? scan)}`.slice(0, 600));
+  assert.equal(minimumCep(scan.minChromium).illustrator, '22.0');
+});
