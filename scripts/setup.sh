@@ -30,13 +30,14 @@ if [ "$(wasm-bindgen --version 2>/dev/null | awk '{print $2}')" != "$wbg_version
   cargo install wasm-bindgen-cli --version "=$wbg_version" --locked
 fi
 
-# 3. wasm-pack (it uses the wasm-bindgen above; wasm-opt is disabled in core/Cargo.toml).
+# 3. wasm-pack (it uses the wasm-bindgen above; its wasm-opt step is off in core/Cargo.toml, and
+#    scripts/wasm-opt.mjs runs binaryen from the Node dependencies instead).
 if ! command -v wasm-pack >/dev/null; then
   say "installing wasm-pack (a few minutes, once)"
   cargo install wasm-pack --locked
 fi
 
-# 4. Node dev dependencies (test browser driver, ESLint, TypeScript, Illustrator typings).
+# 4. Node dev dependencies (test browser driver, ESLint, TypeScript, Illustrator typings, binaryen).
 if [ ! -d node_modules ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
   say "installing Node dependencies"
   npm ci --no-audit --no-fund --loglevel=error
@@ -51,8 +52,11 @@ if [ "$want_all" = 1 ]; then
   command -v inkscape >/dev/null || missing+=(inkscape)
   command -v xvfb-run >/dev/null || missing+=(xvfb)
   command -v xauth >/dev/null || missing+=(xauth)
-  /usr/bin/python3 -c 'import lxml' 2>/dev/null || missing+=(python3-lxml)
-  /usr/bin/python3 -c 'import numpy' 2>/dev/null || missing+=(python3-numpy)
+  # The modules Inkscape's inkex imports on load (Debian only recommends them, so an Inkscape
+  # installed without recommends lacks them).
+  for pair in lxml:python3-lxml numpy:python3-numpy cssselect:python3-cssselect; do
+    /usr/bin/python3 -c "import ${pair%%:*}" 2>/dev/null || missing+=("${pair#*:}")
+  done
   if [ ${#missing[@]} -gt 0 ]; then
     say "installing ${missing[*]} from Debian"
     sudo_cmd=""

@@ -4,8 +4,8 @@
 //   2. runs wasm-bindgen `--target web` (the only target that keeps the core's `inline_js`
 //      snippets) and bundles glue + snippets with esbuild into ONE classic script (IIFE, global
 //      `dformerWasm`) whose syntax is lowered to Chromium 57 (CEP 8 has no ES modules, no `??`),
-//   3. lowers the standard library's post-MVP instructions (tools/wasm-lower-mvp.mjs) and inlines
-//      the bytes as base64 (CEP will not fetch() file:// URLs; inlining avoids Node.js in the panel),
+//   3. lowers the standard library's post-MVP instructions (tools/wasm-lower-mvp.mjs), shrinks the
+//      result with wasm-opt (scripts/wasm-opt.mjs, validating it as MVP) and inlines the bytes as base64 (CEP will not fetch() file:// URLs; inlining avoids Node.js in the panel),
 //   4. scans the .wasm for post-MVP features left and sets the manifest's minimum CEP/Illustrator to
 //      the oldest CEP whose Chromium can instantiate it (tools/wasm-features.mjs),
 //   5. assembles the installable extension folder dist/com.dformer.panel/ (panel + jsx bridge) and
@@ -18,6 +18,7 @@ import { fileURLToPath } from 'node:url';
 import { Reader, readSections } from './tools/wasm-binary.mjs';
 import { minimumCep, scanWasmFeatures } from './tools/wasm-features.mjs';
 import { lowerToMvp } from './tools/wasm-lower-mvp.mjs';
+import { wasmOpt } from '../scripts/wasm-opt.mjs';
 
 const panel = dirname(fileURLToPath(import.meta.url));
 const repo = dirname(panel);
@@ -53,7 +54,14 @@ async function buildWasm() {
   mkdirSync(wasmDir, { recursive: true });
   const lowered = lowerToMvp(readFileSync(join(web, 'dformer_bg.wasm')));
   console.log(`[panel] lowered to MVP: ${JSON.stringify(lowered.lowered)}`);
-  writeFileSync(join(wasmDir, 'dformer_bg.wasm'), lowered.bytes);
+  const out = join(wasmDir, 'dformer_bg.wasm');
+  writeFileSync(out, lowered.bytes);
+  if (!dev) {
+    // Shrink; when nothing post-MVP is left, binaryen also validates the module as pure MVP.
+    const mvp = Object.keys(scanWasmFeatures(lowered.bytes).features).length === 0;
+    const { before, after } = wasmOpt(out, { mvp });
+    console.log(`[panel] wasm-opt -Oz${mvp ? ' --mvp-features' : ''}: ${(before / 1024).toFixed(0)} KB → ${(after / 1024).toFixed(0)} KB`);
+  }
   const esbuild = await import('esbuild');
   await esbuild.build({
     entryPoints: [join(web, 'dformer.js')],
