@@ -223,7 +223,7 @@ mod tests {
             }
             for k in 0..n3 {
                 let r: f64 = (0..n3).map(|c| h[k][c] * d[c]).sum::<f64>() + g[k];
-                assert!(r.abs() < 1e-11, "{what}, row {k}: residual wanted 0, got {r}");
+                assert!(r.abs() < 1e-12, "{what}, row {k}: residual wanted 0, got {r}");
             }
         }
     }
