@@ -4,34 +4,8 @@
 
 mod common;
 use common::*;
-use dformer::api::{self, normalize::NormalizeOptionsDto, path::PathDto, value::Value};
+use dformer::api::{self, normalize::NormalizeOptionsDto, value::Value};
 use proptest::prelude::*;
-
-/// A star-shaped smooth outline: radii in [0.5, 2] at jittered angles, Hermite handles scaled by
-/// `k ∈ [0, 1]` (0: a polygon). Usually simple; callers skip the rare self-intersecting one.
-fn star() -> impl Strategy<Value = PathDto> {
-    (3usize..30, 0.0f64..=1.0, -1e3f64..1e3, -1e3f64..1e3, 0.01f64..100.0, any::<bool>())
-        .prop_flat_map(|(n, k, ox, oy, s, cw)| {
-            (prop::collection::vec((0.5f64..2.0, -0.3f64..0.3), n), Just((k, ox, oy, s, cw)))
-        })
-        .prop_map(|(rs, (k, ox, oy, s, cw))| {
-            let n = rs.len();
-            let h = std::f64::consts::TAU / n as f64;
-            let at = |i: usize| {
-                let (r, j) = rs[i % n];
-                let t = (i as f64 + j) * h * if cw { -1.0 } else { 1.0 };
-                [ox + s * r * t.cos(), oy + s * r * t.sin()]
-            };
-            let pts: Vec<(P, P, P)> = (0..n)
-                .map(|i| {
-                    let (a, prev, next) = (at(i), at(i + n - 1), at(i + 1));
-                    let d = [(next[0] - prev[0]) / 6.0 * k, (next[1] - prev[1]) / 6.0 * k];
-                    (a, [a[0] - d[0], a[1] - d[1]], [a[0] + d[0], a[1] + d[1]])
-                })
-                .collect();
-            path(&pts)
-        })
-}
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: 96, .. ProptestConfig::default() })]

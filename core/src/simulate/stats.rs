@@ -60,7 +60,15 @@ fn angle(a: V3, b: V3, c: V3) -> f64 {
 pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
     let n = pieces.n;
     let c = sol.x.iter().fold([0.0; 3], |s, p| [s[0] + p[0], s[1] + p[1], s[2] + p[2]]).map(|v| v / n as f64);
-    let x: Vec<V3> = sol.x.iter().map(|p| sub(*p, c)).collect();
+    let mut x: Vec<V3> = sol.x.iter().map(|p| sub(*p, c)).collect();
+    // Outward triangles, as promised: the solver keeps a converged shape outward, but a gluing it
+    // cannot realize (strongly non-convex pieces) may end inside out. Its mirror image, an
+    // isometry, is the same approximation seen with the drawn faces outside.
+    if signed_volume(&x, &sol.tri) < 0.0 {
+        for p in &mut x {
+            p[2] = -p[2];
+        }
+    }
 
     let mut triangles = Vec::with_capacity(2 * n);
     let mut piece = Vec::with_capacity(2 * n);

@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 use dformer::api::path::{PathDto, PointDto};
+use proptest::prelude::*;
 
 pub type P = [f64; 2];
 
@@ -195,4 +196,65 @@ pub fn reversed(p: &PathDto) -> PathDto {
 
 pub fn rel(got: f64, want: f64) -> f64 {
     (got - want).abs() / want.abs()
+}
+
+/// A star-shaped smooth outline: radii in [0.5, 2] at jittered angles, Hermite handles scaled by
+/// `k ∈ [0, 1]` (0: a polygon). Usually simple; callers skip the rare self-intersecting one.
+pub fn star() -> impl Strategy<Value = PathDto> {
+    (3usize..30, 0.0f64..=1.0, -1e3f64..1e3, -1e3f64..1e3, 0.01f64..100.0, any::<bool>())
+        .prop_flat_map(|(n, k, ox, oy, s, cw)| {
+            (prop::collection::vec((0.5f64..2.0, -0.3f64..0.3), n), Just((k, ox, oy, s, cw)))
+        })
+        .prop_map(|(rs, (k, ox, oy, s, cw))| {
+            let n = rs.len();
+            let h = std::f64::consts::TAU / n as f64;
+            let at = |i: usize| {
+                let (r, j) = rs[i % n];
+                let t = (i as f64 + j) * h * if cw { -1.0 } else { 1.0 };
+                [ox + s * r * t.cos(), oy + s * r * t.sin()]
+            };
+            let pts: Vec<(P, P, P)> = (0..n)
+                .map(|i| {
+                    let (a, prev, next) = (at(i), at(i + n - 1), at(i + 1));
+                    let d = [(next[0] - prev[0]) / 6.0 * k, (next[1] - prev[1]) / 6.0 * k];
+                    (a, [a[0] - d[0], a[1] - d[1]], [a[0] + d[0], a[1] + d[1]])
+                })
+                .collect();
+            path(&pts)
+        })
+}
+
+pub type Cubic = [P; 4];
+
+/// The segments of a closed path as control points.
+pub fn cubics(p: &PathDto) -> Vec<Cubic> {
+    let n = p.points.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (&p.points[i], &p.points[(i + 1) % n]);
+            [a.anchor, a.right.unwrap_or(a.anchor), b.left.unwrap_or(b.anchor), b.anchor]
+        })
+        .collect()
+}
+
+/// B(t).
+pub fn eval(c: &Cubic, t: f64) -> P {
+    let u = 1.0 - t;
+    let w = [u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t];
+    [0, 1].map(|k| (0..4).map(|i| w[i] * c[i][k]).sum())
+}
+
+/// B'(t).
+pub fn deriv(c: &Cubic, t: f64) -> P {
+    let u = 1.0 - t;
+    let w = [3.0 * u * u, 6.0 * u * t, 3.0 * t * t];
+    [0, 1].map(|k| (0..3).map(|i| w[i] * (c[i + 1][k] - c[i][k])).sum())
+}
+
+/// The first part of `c`, up to parameter `t` (de Casteljau).
+pub fn head(c: &Cubic, t: f64) -> Cubic {
+    let lerp = |a: P, b: P| [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
+    let (p01, p12, p23) = (lerp(c[0], c[1]), lerp(c[1], c[2]), lerp(c[2], c[3]));
+    let (p012, p123) = (lerp(p01, p12), lerp(p12, p23));
+    [c[0], p01, p012, lerp(p012, p123)]
 }

@@ -1,0 +1,150 @@
+//! `simulate` on random (often non-convex) pieces: no error for valid input, no explosion, a
+//! closed mesh, and stats that tell the truth. The flat lengths are recomputed here from the
+//! pieces (seam samples placed by the independent arc length of `common`), so a solver that
+//! claims `converged` while bending an edge is caught.
+
+mod common;
+use common::*;
+use dformer::api::{self, normalize::NormalizeOptionsDto, simulate::SimulateOptionsDto, value::Value};
+use proptest::prelude::*;
+use std::collections::HashMap;
+
+type V3 = [f64; 3];
+
+/// The point at arc length `s` (any real, taken modulo the perimeter) walking the path forwards,
+/// or backwards (`forward == false`, the walk starting at the same first anchor). Segment lengths
+/// by [`cubic_len_adaptive`]; within the segment, Newton's method on the partial length.
+fn at_arclen(segs: &[Cubic], lens: &[f64], s: f64, forward: bool) -> P {
+    let total = ksum(lens.iter().copied());
+    let mut s = s.rem_euclid(total);
+    if !forward {
+        s = (total - s).rem_euclid(total);
+    }
+    let mut i = 0;
+    while i + 1 < segs.len() && s > lens[i] {
+        s -= lens[i];
+        i += 1;
+    }
+    let c = &segs[i];
+    let mut t = (s / lens[i].max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+    for _ in 0..40 {
+        let d = deriv(c, t);
+        let speed = d[0].hypot(d[1]);
+        if speed == 0.0 {
+            break;
+        }
+        let next = (t - (cubic_len_adaptive(head(c, t)) - s) / speed).clamp(0.0, 1.0);
+        if (next - t).abs() < 1e-15 {
+            break;
+        }
+        t = next;
+    }
+    eval(c, t)
+}
+
+fn d3(a: V3, b: V3) -> f64 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+}
+
+fn signed_area(p: &[P]) -> f64 {
+    (0..p.len()).map(|i| p[i][0] * p[(i + 1) % p.len()][1] - p[(i + 1) % p.len()][0] * p[i][1]).sum::<f64>() / 2.0
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    #[test]
+    fn random_pieces_give_a_closed_bounded_mesh_with_honest_stats(
+        a in star(), b in star(), n in 16usize..40, offset in 0.0f64..1.0,
+    ) {
+        let opts = NormalizeOptionsDto { target: Some(Value::Text("mean".into())), ..Default::default() };
+        let pieces = match api::normalize(&[a, b], &opts) {
+            Ok(r) => r.paths,
+            Err(dformer::Error::SelfIntersection { .. }) => return Ok(()),
+            Err(e) => return Err(TestCaseError::fail(format!("valid stars rejected: {e}"))),
+        };
+        let segs = [cubics(&pieces[0]), cubics(&pieces[1])];
+        let lens: Vec<Vec<f64>> = segs.iter().map(|s| s.iter().map(|&c| cubic_len_adaptive(c)).collect()).collect();
+        let perimeter = ksum(lens[0].iter().copied());
+        let o = SimulateOptionsDto { offset: Some(offset * perimeter), resolution: Some(n as f64), ..Default::default() };
+        let r = api::simulate::simulate(&pieces, &o).map_err(|e| TestCaseError::fail(format!("simulate: {e}")))?;
+        let x = &r.vertices;
+        prop_assert!(x.iter().flatten().all(|v| v.is_finite()), "non-finite vertex");
+        prop_assert_eq!(r.seam.len(), n);
+        prop_assert_eq!(r.piece.len(), r.triangles.len());
+        // Any two seam vertices are joined along the seam by at most half the perimeter.
+        let spread = x.iter().flat_map(|p| x.iter().map(move |q| d3(*p, *q))).fold(0.0, f64::max);
+        prop_assert!(spread <= 0.5 * perimeter * (1.0 + 1e-3), "vertices {spread} apart, perimeter {perimeter}");
+        // Closed and consistently oriented: every directed edge as often as its reverse (once
+        // each, or twice where both pieces crease along the same chord, as they may when the
+        // solver cannot realize a strongly non-convex gluing).
+        let mut seen: HashMap<(usize, usize), usize> = HashMap::new();
+        for t in &r.triangles {
+            prop_assert!(t.iter().all(|&i| i < x.len()), "triangle {t:?} indexes past {} vertices", x.len());
+            for m in 0..3 {
+                *seen.entry((t[m], t[(m + 1) % 3])).or_default() += 1;
+            }
+        }
+        for (&(i, j), &c) in &seen {
+            prop_assert!(c <= 2 && seen.get(&(j, i)) == Some(&c), "edge {i}->{j}: used {c} times, reverse {:?}", seen.get(&(j, i)));
+        }
+        // Flat seam samples: A counter-clockwise from its first anchor, B clockwise from its
+        // first anchor + offset (connect's `start` convention), both at equal steps.
+        let flat: Vec<Vec<P>> = (0..2).map(|j| {
+            let ccw = signed_area(&segs[j].iter().map(|c| c[0]).collect::<Vec<_>>()) > 0.0;
+            let forward = if j == 0 { ccw } else { !ccw };
+            let s0 = if j == 0 { 0.0 } else { offset * perimeter };
+            (0..n).map(|k| at_arclen(&segs[j], &lens[j], s0 + k as f64 * perimeter / n as f64, forward)).collect()
+        }).collect();
+        let mut strain = 0.0f64;
+        for (t, &p) in r.triangles.iter().zip(&r.piece) {
+            for m in 0..3 {
+                let (i, j) = (t[m], t[(m + 1) % 3]);
+                let (u, v) = (r.seam.iter().position(|&s| s == i).unwrap(), r.seam.iter().position(|&s| s == j).unwrap());
+                let f = &flat[p as usize];
+                let want = dist2(f[u], f[v]);
+                strain = strain.max((d3(x[i], x[j]) - want).abs() / want);
+            }
+        }
+        let s = &r.stats;
+        if s.converged {
+            prop_assert!(strain <= 1e-6, "converged, but an edge is {strain:.2e} off its flat length (stats say {:.2e})", s.max_strain);
+        }
+        prop_assert!((strain - s.max_strain).abs() <= 1e-6 + 1e-3 * strain, "max strain: recomputed {strain:.3e}, stats {:.3e}", s.max_strain);
+        let (vol, area) = mesh_volume_area(x, &r.triangles);
+        prop_assert!((vol - s.volume).abs() <= 1e-9 * perimeter.powi(3), "volume: mesh {vol}, stats {}", s.volume);
+        prop_assert!((area - s.area).abs() <= 1e-9 * perimeter.powi(2), "area: mesh {area}, stats {}", s.area);
+    }
+}
+
+/// Volume and area of a closed triangle mesh (divergence theorem; cross products). The volume
+/// is positive when the triangles turn counter-clockwise seen from outside.
+fn mesh_volume_area(x: &[V3], triangles: &[[usize; 3]]) -> (f64, f64) {
+    let cr = |u: V3, v: V3| [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+    let sub = |u: V3, v: V3| [u[0] - v[0], u[1] - v[1], u[2] - v[2]];
+    let (mut vol, mut area) = (0.0, 0.0);
+    for &[i, j, k] in triangles {
+        let (a, b, c) = (x[i], x[j], x[k]);
+        let bc = cr(b, c);
+        vol += (a[0] * bc[0] + a[1] * bc[1] + a[2] * bc[2]) / 6.0;
+        let nrm = cr(sub(b, a), sub(c, a));
+        area += 0.5 * (nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]).sqrt();
+    }
+    (vol, area)
+}
+
+/// Regression: an unconverged, strongly non-convex gluing came out inside out (negative signed
+/// volume, so STL normals pointing in) while `stats.volume` reported the positive value.
+#[test]
+fn unrealizable_gluing_is_still_outward_oriented() {
+    let d: serde_json::Value = serde_json::from_str(include_str!("data/inside-out-gluing.json")).unwrap();
+    let pieces: Vec<dformer::api::path::PathDto> = serde_json::from_value(d["pieces"].clone()).unwrap();
+    let o = SimulateOptionsDto { offset: d["offset"].as_f64(), resolution: d["resolution"].as_f64(), ..Default::default() };
+    let r = api::simulate::simulate(&pieces, &o).expect("simulate");
+    let (vol, _) = mesh_volume_area(&r.vertices, &r.triangles);
+    assert!(vol > 0.0 && (vol - r.stats.volume).abs() <= 1e-9 * vol, "mesh volume {vol}, stats {}", r.stats.volume);
+}
+
+fn dist2(a: P, b: P) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
