@@ -100,6 +100,10 @@
     }
     return null;
   }
+  /** Hidden with display:none (an Inkscape layer switched off, an old draft): not on the page, not read. */
+  function hidden(el) {
+    return el.getAttribute('display') === 'none' || /(^|;)\s*display\s*:\s*none\s*(;|$)/i.test(el.getAttribute('style') || '');
+  }
   /** An SVG length ("210mm", "8.5in", "300") in points; `px` points per px (and per plain number). */
   function lengthPt(text, px) {
     var m = /^\s*([-+]?[\d.]+(?:e[-+]?\d+)?)\s*(px|pt|pc|mm|cm|in)?\s*$/i.exec(text || '');
@@ -161,7 +165,7 @@
     var root = rootMatrix(svg, fromIllustrator(doc, svg) ? 1 : CSS_PT.px);
     (function walk(el, m) {
       for (var c = el.firstElementChild; c; c = c.nextElementSibling) {
-        if (SKIP[c.localName]) continue;
+        if (SKIP[c.localName] || hidden(c)) continue;
         var cm = mul(m, parseTransform(c.getAttribute('transform')));
         var d = shapeD(c);
         if (d === null) {
