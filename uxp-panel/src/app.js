@@ -37,7 +37,7 @@
     exact: { get: function () { return params.exact; }, set: function (v) { params.exact = v; }, min: 0 },
     pitch: { get: function () { return params.pitch; }, set: function (v) { params.pitch = v; }, min: 0 },
     diameter: { get: function () { return params.diameter; }, set: function (v) { params.diameter = v; }, min: 0 },
-    inset: { get: function () { return params.inset; }, set: function (v) { params.inset = v; }, min: -Infinity },
+    inset: { get: function () { return params.inset; }, set: function (v) { params.inset = v; }, min: 0 },
     length: { get: function () { return params.length; }, set: function (v) { params.length = v; }, min: 0 },
     kerf: { get: function () { return params.kerf; }, set: function (v) { params.kerf = v; }, min: 0 },
     offsetA: { get: function () { return params.start[0].offset; }, set: function (v) { params.start[0].offset = v; }, min: -Infinity },
@@ -49,6 +49,10 @@
 
   function fmt(points) {
     return DF.units.format(points, unit);
+  }
+  /** The design's error with its lengths in the current unit (the core prints points). */
+  function errorText(d) {
+    return d && d.error ? DF.messages.humanize(d.error, fmt) : '';
   }
   function lenText(points) {
     // About 0.01 mm everywhere; one more decimal for sub-unit values in the coarse-grained units.
@@ -181,7 +185,7 @@
       DF.preview.render($('#preview'), pieces.slice(0, 6), layers, settings.labelSize, 0);
       stats.textContent = '';
       msg.className = 'message' + (design && !design.idle ? ' error' : '');
-      msg.textContent = design ? design.error : '';
+      msg.textContent = errorText(design);
     }
     $('#apply-btn').disabled = !(design && design.ok) || applying;
   }
@@ -234,7 +238,9 @@
     });
     $('#angle').addEventListener('input', function (e) {
       var v = Number(e.target.value);
-      if (v > 0 && v < 180) { params.angle = v; save(); recompute(); }
+      var ok = v > 0 && v <= 90; // the flank against the edge: 90° is square teeth
+      e.target.classList.toggle('invalid', !ok);
+      if (ok) { params.angle = v; save(); recompute(); }
     });
     $('#invert').addEventListener('change', function (e) { params.invert = e.target.checked; changed(); });
     $$('input.len').forEach(function (input) {
@@ -355,7 +361,7 @@
     }
     if (!design || !design.ok) {
       viewer.setMesh(null);
-      return set3dMessage(design && design.error ? design.error : 'Select two closed paths.', false);
+      return set3dMessage(design && design.error ? errorText(design) : 'Select two closed paths.', false);
     }
     var d = design;
     var pieces = d.pieces.map(function (p) { return p.path; });

@@ -30,7 +30,13 @@
     function layout(shapes) {
       var x = 0;
       return shapes.map(function (s) {
-        var b = DF.core.measure(s.path).bounds;
+        var b;
+        try {
+          b = DF.core.measure(s.path).bounds;
+        } catch (e) {
+          // Name the file and the shape: measuring one path, the core calls it "the first path".
+          throw new Error(s.file + ', shape “' + s.name + '”: ' + e.message.replace(/^The first path /, 'The path '));
+        }
         var moved = DF.core.transformPath(s.path, [1, 0, 0, 1, x - b.min[0], -b.max[1]]);
         x += b.max[0] - b.min[0] + GAP;
         return { name: s.name, path: moved };
@@ -47,7 +53,7 @@
         parsed.shapes.forEach(function (s) {
           // One shape per file: the file's name says it; several: the shape's own id.
           var name = parsed.shapes.length === 1 && files.length > 1 ? base : s.name;
-          shapes.push({ name: name, path: s.path });
+          shapes.push({ name: name, path: s.path, file: file.name });
         });
       });
       var used = shapes.slice(0, 2);

@@ -52,6 +52,53 @@
     return '<text x="' + x + '" y="' + y + '" font-size="' + n(size) + '" text-anchor="middle" dominant-baseline="central"' + rot + '>' + esc(label.text) + '</text>';
   }
 
+  function movePath(path, dx, dy) {
+    function mv(q) {
+      return q ? [q[0] + dx, q[1] + dy] : q;
+    }
+    return {
+      closed: path.closed,
+      points: path.points.map(function (q) {
+        var out = { anchor: mv(q.anchor) };
+        if (q.left) out.left = mv(q.left);
+        if (q.right) out.right = mv(q.right);
+        return out;
+      }),
+    };
+  }
+  /**
+   * The pieces placed left to right, GAP apart, tops aligned (document points, y up). Normalizing
+   * scales each piece about its own centre, so pieces that were side by side can overlap: a laser
+   * file must never stack one cut over another.
+   */
+  var GAP = 10 * (72 / 25.4); // 10 mm
+  function separate(pieces) {
+    var x = 0;
+    return pieces.map(function (p) {
+      var b = boundsOf([p.outline].concat(p.holes.map(function (h) { return h.path; }), p.marks));
+      var dx = x - b[0];
+      var dy = b[1]; // y down → the top (−b[1] in y up) goes to 0
+      x += b[2] - b[0] + GAP;
+      var moved = {};
+      Object.keys(p).forEach(function (k) { moved[k] = p[k]; });
+      moved.outline = movePath(p.outline, dx, dy);
+      moved.holes = p.holes.map(function (h) {
+        var c = {};
+        Object.keys(h).forEach(function (k) { c[k] = h[k]; });
+        c.path = movePath(h.path, dx, dy);
+        return c;
+      });
+      moved.marks = p.marks.map(function (m) { return movePath(m, dx, dy); });
+      moved.labels = p.labels.map(function (l) {
+        var c = {};
+        Object.keys(l).forEach(function (k) { c[k] = l[k]; });
+        c.at = [l.at[0] + dx, l.at[1] + dy];
+        return c;
+      });
+      return moved;
+    });
+  }
+
   /**
    * The laser file for a design: { pieces: [{ name, outline, holes, labels, marks }] } (document
    * points, y up), layers settings { cut, score, engrave: { name, color, width } }, labelSize (pt),
@@ -59,6 +106,7 @@
    */
   function laserSvg(design, layers, labelSize, unit) {
     var all = [];
+    design = { pieces: separate(design.pieces) };
     design.pieces.forEach(function (p) {
       all.push(p.outline);
       p.holes.forEach(function (h) { all.push(h.path); });
@@ -104,5 +152,5 @@
     out.push('</svg>');
     return out.join('\n') + '\n';
   }
-  DF.svgExport = { pathD: pathD, laserSvg: laserSvg, boundsOf: boundsOf, labelEl: labelEl, esc: esc, n: n };
+  DF.svgExport = { pathD: pathD, laserSvg: laserSvg, separate: separate, boundsOf: boundsOf, labelEl: labelEl, esc: esc, n: n };
 })(window.DF = window.DF || {});

@@ -100,22 +100,45 @@
     }
     return null;
   }
-  /** An SVG length ("210mm", "8.5in", "300") in points. */
-  function lengthPt(text) {
+  /** Hidden with display:none (an Inkscape layer switched off, an old draft): not on the page, not read. */
+  function hidden(el) {
+    return el.getAttribute('display') === 'none' || /(^|;)\s*display\s*:\s*none\s*(;|$)/i.test(el.getAttribute('style') || '');
+  }
+  /** An SVG length ("210mm", "8.5in", "300") in points; `px` points per px (and per plain number). */
+  function lengthPt(text, px) {
     var m = /^\s*([-+]?[\d.]+(?:e[-+]?\d+)?)\s*(px|pt|pc|mm|cm|in)?\s*$/i.exec(text || '');
-    return m ? parseFloat(m[1]) * CSS_PT[(m[2] || '').toLowerCase()] : NaN;
+    if (!m) return NaN;
+    var u = (m[2] || '').toLowerCase();
+    return parseFloat(m[1]) * (u === '' || u === 'px' ? px : CSS_PT[u]);
+  }
+  /**
+   * Whether Adobe Illustrator wrote the file. Illustrator's SVG px is its point (72 per inch), not
+   * the CSS px (96 per inch): read at 96 ppi, a 100 mm rectangle drawn in Illustrator is 75 mm.
+   * "Save As" leaves a "Generator: Adobe Illustrator" comment; "Export As" marks the root with
+   * data-name; older files declare Illustrator's namespaces (xmlns:x, xmlns:i → ns.adobe.com).
+   */
+  function fromIllustrator(doc, svg) {
+    var nodes = Array.prototype.slice.call(doc.childNodes).concat(Array.prototype.slice.call(svg.childNodes));
+    for (var i = 0; i < nodes.length; i++) {
+      if (nodes[i].nodeType === 8 && /Adobe Illustrator/i.test(nodes[i].nodeValue)) return true;
+    }
+    if (svg.hasAttribute('data-name')) return true;
+    for (var k = 0; k < svg.attributes.length; k++) {
+      if (/ns\.adobe\.com/i.test(svg.attributes[k].value)) return true;
+    }
+    return false;
   }
   /** Root matrix: user units → points (viewBox and physical width/height), then y flipped to y up. */
-  function rootMatrix(svg) {
+  function rootMatrix(svg, px) {
     var vb = (svg.getAttribute('viewBox') || '').trim().split(/[\s,]+/).map(Number);
-    var sx = 0.75;
-    var sy = 0.75;
+    var sx = px;
+    var sy = px;
     var tx = 0;
     var ty = 0;
     if (vb.length === 4 && vb[2] > 0 && vb[3] > 0) {
-      var w = lengthPt(svg.getAttribute('width'));
-      var h = lengthPt(svg.getAttribute('height'));
-      sx = isFinite(w) && w > 0 ? w / vb[2] : 0.75;
+      var w = lengthPt(svg.getAttribute('width'), px);
+      var h = lengthPt(svg.getAttribute('height'), px);
+      sx = isFinite(w) && w > 0 ? w / vb[2] : px;
       sy = isFinite(h) && h > 0 ? h / vb[3] : sx;
       tx = -vb[0] * sx;
       ty = -vb[1] * sy;
@@ -139,10 +162,10 @@
     var svg = doc.documentElement;
     if (svg.localName !== 'svg') throw new Error(fileName + ' is not an SVG file (its root element is <' + svg.localName + '>).');
     var shapes = [];
-    var root = rootMatrix(svg);
+    var root = rootMatrix(svg, fromIllustrator(doc, svg) ? 1 : CSS_PT.px);
     (function walk(el, m) {
       for (var c = el.firstElementChild; c; c = c.nextElementSibling) {
-        if (SKIP[c.localName]) continue;
+        if (SKIP[c.localName] || hidden(c)) continue;
         var cm = mul(m, parseTransform(c.getAttribute('transform')));
         var d = shapeD(c);
         if (d === null) {

@@ -1,0 +1,39 @@
+// Opening a file: shapes in a hidden layer are not pieces, and a shape the core refuses is named
+// by its file and id (the core, measuring one path at a time, only says "the first path").
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { usePanelBrowser, waitReady } from './support.mjs';
+
+const panel = usePanelBrowser();
+
+async function openFile(name, text) {
+  const page = await panel.browser.newPage();
+  await page.goto(panel.url);
+  await waitReady(page, 'load');
+  await page.setInputFiles('#open-input', [{ name, mimeType: 'image/svg+xml', buffer: Buffer.from(text) }]);
+  await page.waitForFunction((n) => (document.querySelector('#selection-summary').textContent + document.querySelector('#status').textContent).includes(n), name);
+  return page;
+}
+
+test('an Inkscape layer switched off (display:none) is not read', async () => {
+  const svg = '<svg xmlns="http://www.w3.org/2000/svg" xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape" width="300mm" height="100mm" viewBox="0 0 300 100">' +
+    '<g inkscape:groupmode="layer" inkscape:label="draft" style="display:none"><rect id="draft" x="5" y="5" width="20" height="20"/></g>' +
+    '<g inkscape:groupmode="layer" inkscape:label="Layer 1"><circle id="keepA" cx="100" cy="50" r="40"/><rect id="keepB" x="160" y="10" width="80" height="60"/></g>' +
+    '<rect id="off" display="none" x="250" y="10" width="10" height="10"/></svg>';
+  const page = await openFile('layers.svg', svg);
+  const names = await page.$$eval('#measure-table td.name', (tds) => tds.map((t) => t.textContent));
+  assert.deepEqual(names.slice(0, 2), ['keepA', 'keepB']);
+  const perims = await page.$$eval('#measure-table td.perimeter', (tds) => tds.map((t) => t.textContent));
+  assert.equal(perims[1], `${(2 * (80 + 60)).toFixed(2)} mm`);
+  assert.doesNotMatch(await page.textContent('#selection-summary'), /skipped/);
+  await page.close();
+});
+
+test('an open path among the pieces: the message names the file and the shape', async () => {
+  const svg = '<svg xmlns="http://www.w3.org/2000/svg" width="200mm" height="100mm" viewBox="0 0 200 100">' +
+    '<circle id="c" cx="50" cy="50" r="40"/><path id="unclosed" d="M 110 10 L 190 10 L 190 90 L 110 90"/></svg>';
+  const page = await openFile('open.svg', svg);
+  const status = await page.textContent('#status');
+  assert.match(status, /^open\.svg, shape “unclosed”: The path is open\./, status);
+  await page.close();
+});
