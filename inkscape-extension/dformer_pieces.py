@@ -106,13 +106,39 @@ def to_doc(path, transform):
     }
 
 
+def _number(value):
+    """A path-data number at full precision (shortest round trip). inkex's ``str(Path)``
+    writes 6 significant digits, which moves a normalized outline by ~1e-6 relative and
+    makes its perimeter differ from its partner's when it is read back."""
+    value = float(value)
+    if value.is_integer() and abs(value) < 1e15:
+        return str(int(value))
+    return repr(value)
+
+
+def full_precision_d(path):
+    """SVG path data for an inkex Path, every number at full precision."""
+    return " ".join(
+        " ".join([seg.letter] + [_number(a) for a in seg.args]) for seg in path
+    )
+
+
+def local_path_data(elem):
+    """The element's outline as path data in its own coordinates, at full precision: a
+    <path>'s own ``d`` as written (the core parses it, as the ``dformer`` command does),
+    other shapes through inkex's ``get_path()``."""
+    if isinstance(elem, inkex.PathElement):
+        return elem.get("d") or ""
+    return full_precision_d(elem.path.to_absolute())
+
+
 def read_pieces(shapes):
     """One core path per shape, in document user units. A shape must be one outline: several
     subpaths (a compound path) is an error naming the shape."""
     local_d = []
     for elem in shapes:
         check_editable(elem)
-        local_d.append(str(elem.path.to_absolute()))
+        local_d.append(local_path_data(elem))
     answers = call_all([{"op": "pathFromSvg", "d": d} for d in local_d])
     pieces = []
     for elem, subpaths in zip(shapes, answers):
