@@ -1,7 +1,8 @@
 """Selected Inkscape objects <-> the core's path JSON, in document user units.
 
-SVG handling is inkex's: shapes become path data with ``ShapeElement.get_path()`` (rect,
-circle, ellipse, polygon, path), nested group transforms composed from the ``transform`` attributes. The
+A <path> sends its own ``d``; <rect>, <circle> and <ellipse> become SVG's equivalent paths
+(``local_path_data``), polygons go through inkex's ``get_path()``, all at full precision;
+nested group transforms are composed from the ``transform`` attributes. The
 path data itself is parsed by the core (``pathFromSvg``) and written by it (``pathToSvg``), so
 the extension and the ``dformer`` batch command read SVG curves identically.
 
@@ -123,12 +124,93 @@ def full_precision_d(path):
     )
 
 
+def _length_attr(elem, name, default=None):
+    """A geometry attribute in user units; percentages (relative to the viewport) are refused."""
+    raw = elem.get(name)
+    if raw is None:
+        return default
+    if "%" in raw:
+        raise CoreError(
+            f"{describe(elem)}: attribute {name}=\"{raw}\" is a percentage, which D-former does "
+            "not follow. Use Path > Object to Path on it first."
+        )
+    return raw
+
+
+def rect_d(elem):
+    """A <rect>'s outline by SVG's rules (inkex 1.2 ignores them): a missing, ``auto`` or
+    negative rx/ry takes the other one's value, and each is clamped to half the width or
+    height. Same result as the ``dformer`` batch command."""
+
+    def radius(name):
+        raw = _length_attr(elem, name)
+        if raw is None or raw.strip() == "auto":
+            return None
+        value = elem.to_dimensionless(raw)
+        return value if value >= 0 else None
+
+    x = elem.to_dimensionless(_length_attr(elem, "x", "0"))
+    y = elem.to_dimensionless(_length_attr(elem, "y", "0"))
+    w = elem.to_dimensionless(_length_attr(elem, "width", "0"))
+    h = elem.to_dimensionless(_length_attr(elem, "height", "0"))
+    rx, ry = radius("rx"), radius("ry")
+    if rx is None and ry is None:
+        rx = ry = 0.0
+    elif rx is None:
+        rx = ry
+    elif ry is None:
+        ry = rx
+    if not (w > 0 and h > 0):
+        raise CoreError(f"{describe(elem)} has zero or negative width or height.")
+    rx, ry = min(rx, w / 2), min(ry, h / 2)
+    n = _number
+    if rx <= 0 or ry <= 0:
+        return f"M {n(x)} {n(y)} H {n(x + w)} V {n(y + h)} H {n(x)} Z"
+    arc = f"A {n(rx)} {n(ry)} 0 0 1"
+    return (
+        f"M {n(x + rx)} {n(y)} H {n(x + w - rx)} {arc} {n(x + w)} {n(y + ry)} "
+        f"V {n(y + h - ry)} {arc} {n(x + w - rx)} {n(y + h)} "
+        f"H {n(x + rx)} {arc} {n(x)} {n(y + h - ry)} "
+        f"V {n(y + ry)} {arc} {n(x + rx)} {n(y)} Z"
+    )
+
+
+def ellipse_d(elem):
+    """A <circle>'s or <ellipse>'s outline as SVG defines it: four arcs from (cx + rx, cy),
+    clockwise on screen (inkex 1.2 starts at the top and turns the other way). The first node
+    is where Connectors' "start" is measured from, so this matches the ``dformer`` command and
+    Inkscape's Object to Path."""
+    cx = elem.to_dimensionless(_length_attr(elem, "cx", "0"))
+    cy = elem.to_dimensionless(_length_attr(elem, "cy", "0"))
+    if isinstance(elem, inkex.Circle):
+        rx = ry = elem.to_dimensionless(_length_attr(elem, "r", "0"))
+    else:
+        raw_rx, raw_ry = _length_attr(elem, "rx"), _length_attr(elem, "ry")
+        raw_rx = raw_ry if raw_rx in (None, "auto") else raw_rx
+        raw_ry = raw_rx if raw_ry in (None, "auto") else raw_ry
+        rx, ry = (elem.to_dimensionless(v) if v not in (None, "auto") else 0.0 for v in (raw_rx, raw_ry))
+    if not (rx > 0 and ry > 0):
+        raise CoreError(f"{describe(elem)} has a zero or negative radius.")
+    n = _number
+    arc = f"A {n(rx)} {n(ry)} 0 0 1"
+    return (
+        f"M {n(cx + rx)} {n(cy)} {arc} {n(cx)} {n(cy + ry)} {arc} {n(cx - rx)} {n(cy)} "
+        f"{arc} {n(cx)} {n(cy - ry)} {arc} {n(cx + rx)} {n(cy)} Z"
+    )
+
+
 def local_path_data(elem):
     """The element's outline as path data in its own coordinates, at full precision: a
     <path>'s own ``d`` as written (the core parses it, as the ``dformer`` command does),
-    other shapes through inkex's ``get_path()``."""
+    <rect>, <circle> and <ellipse> by SVG's rules, polygons through inkex's ``get_path()``."""
     if isinstance(elem, inkex.PathElement):
         return elem.get("d") or ""
+    if isinstance(elem, inkex.Rectangle):
+        return rect_d(elem)
+    if isinstance(elem, (inkex.Circle, inkex.Ellipse)):
+        return ellipse_d(elem)
+    for name in GEOMETRY_ATTRS:
+        _length_attr(elem, name)
     return full_precision_d(elem.path.to_absolute())
 
 

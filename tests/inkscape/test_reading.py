@@ -88,6 +88,43 @@ class FullPrecision(unittest.TestCase):
         self.assertIn(f"perimeter {2 * (20 + 25.4) * 96 / 25.4:.4f} mm", err)
 
 
+class SvgShapeRules(unittest.TestCase):
+    def test_rect_radii_are_clamped_to_half_the_sides(self):
+        # ry 35 > height/2: SVG draws ry = 20, a stadium 100 x 40 with round ends.
+        doc = Doc(self, MM, '<rect id="R" x="10" y="10" width="100" height="40" rx="20" ry="35"/>'
+                            '<rect id="S" x="10" y="100" width="60" height="40" rx="auto" ry="7"/>'
+                            '<rect id="T" x="10" y="150" width="50" height="50"/>')
+        _, err, _ = doc.run(Measure, "--id=R", "--id=S")
+        self.assertIn(f"#R: perimeter {2 * 60 + 2 * math.pi * 20:.4f} mm", err)
+        self.assertIn(f"#S: perimeter {2 * (46 + 26) + 2 * math.pi * 7:.4f} mm", err)
+        svg, err, _ = doc.run(Normalize, "--id=T", "--id=R", "--target=first")
+        self.assertEqual(err, "")
+        self.assertLess(rel(perimeter(svg.getElementById("R")), 200.0), 1e-9)
+
+    def test_circles_start_at_the_right_and_run_clockwise_like_svg_and_the_dformer_command(self):
+        doc = Doc(self, MM, '<circle id="C" cx="100" cy="100" r="20"/><ellipse id="E" cx="100" cy="200" rx="30" ry="10"/>')
+        _, err, _ = doc.run(Measure, "--id=C", "--id=E")
+        batch = json.loads(subprocess.run([os.environ["DFORMER_BIN"], "measure", "--json", doc.path],
+                                          capture_output=True, text=True, check=True).stdout)
+        for line, row in zip(err.splitlines(), batch):
+            self.assertIn("drawn clockwise", line)
+            self.assertEqual(row["direction"], "clockwise")
+        # Connector 1 sits at the first node, (cx + r, cy): its hole at the inset inwards.
+        _, _, data = doc.run(Normalize, "--id=C", "--id=E", "--target=first")
+        svg, err, _ = doc.then(self, data).run(Connect, "--id=C", "--id=E", "--count=8", "--inset=3", "--diameter=1")
+        hole = svg.getElementById("dformer-hole-C-1").path.to_superpath()[0]
+        xs, ys = [p[1][0] for p in hole], [p[1][1] for p in hole]
+        centre = ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2)
+        self.assertAlmostEqual(centre[0], 117.0, places=6)
+        self.assertAlmostEqual(centre[1], 100.0, places=6)
+
+    def test_percentage_lengths_are_refused_by_name(self):
+        doc = Doc(self, MM, '<rect id="P" x="10" y="10" width="50%" height="10"/><rect id="Q" x="10" y="50" width="5" height="5"/>')
+        svg, err, data = doc.run(Normalize, "--id=P", "--id=Q")
+        self.assertIsNone(svg)
+        self.assertEqual(data, b"")
+        self.assertIn('#P: attribute width="50%" is a percentage', err)
+
 
 if __name__ == "__main__":
     unittest.main()
