@@ -10,7 +10,7 @@ writer never ran, the document is unchanged.
 import inkex
 
 from dformer_bridge import CoreError
-from dformer_pieces import describe, selected_shapes
+from dformer_pieces import describe, name_pieces, selected_shapes
 
 UNITS = ("mm", "cm", "in", "pt", "pc", "px")
 
@@ -66,6 +66,7 @@ class DformerEffect(inkex.EffectExtension):
                 f"Select {want} closed path{'s' if (high or low) != 1 else ''} "
                 f"(or groups of them); {len(shapes)} selected."
             )
+        self.shapes = shapes
         return shapes
 
     # -- the effect --------------------------------------------------------------------------
@@ -77,6 +78,6 @@ class DformerEffect(inkex.EffectExtension):
         try:
             write = self.compute()
         except CoreError as err:
-            raise inkex.AbortExtension(str(err)) from err
+            raise inkex.AbortExtension(name_pieces(str(err), getattr(self, "shapes", []))) from err
         if write is not None:
             write()

@@ -12,9 +12,11 @@ so mapping anchors and handles maps the curve exactly; results are mapped back t
 inverse transform when an element is updated in place.
 """
 
+import re
+
 import inkex
 
-from dformer_bridge import CoreError, call_all
+from dformer_bridge import CoreError, call_all, run_batch
 
 #: inkex classes that can be D-form pieces (closed outlines). Polyline and Line are accepted
 #: so that the core can say the outline is open, rather than the extension ignoring them.
@@ -39,6 +41,23 @@ def describe(elem):
     """How messages name an element: its id and, when set, its label."""
     label = elem.label
     return f"#{elem.get_id()}" + (f" ({label})" if label and label != elem.get_id() else "")
+
+
+_ORDINALS = {"first": 0, "second": 1, "third": 2}
+_PIECE_REF = re.compile(r"\b[Tt]he (first|second|third|(\d+)(?:st|nd|rd|th)) path\b")
+
+
+def name_pieces(message, shapes):
+    """The core names pieces by position ("The second path is open."); a student needs the
+    object: "#path12 (Left) is open." ``shapes`` are the pieces in the order the core got them."""
+
+    def repl(match):
+        index = _ORDINALS.get(match.group(1))
+        if index is None:
+            index = int(match.group(2)) - 1
+        return describe(shapes[index]) if 0 <= index < len(shapes) else match.group(0)
+
+    return _PIECE_REF.sub(repl, message)
 
 
 def is_own_output(elem):
@@ -221,9 +240,11 @@ def read_pieces(shapes):
     for elem in shapes:
         check_editable(elem)
         local_d.append(local_path_data(elem))
-    answers = call_all([{"op": "pathFromSvg", "d": d} for d in local_d])
+    answers = run_batch([{"op": "pathFromSvg", "d": d} for d in local_d])
     pieces = []
     for elem, subpaths in zip(shapes, answers):
+        if isinstance(subpaths, dict) and "error" in subpaths:
+            raise CoreError(f"{describe(elem)}: {subpaths['error']}")
         if len(subpaths) != 1:
             raise CoreError(
                 f"{describe(elem)} has {len(subpaths)} subpaths; a D-form piece must be one outline. "

@@ -126,5 +126,20 @@ class SvgShapeRules(unittest.TestCase):
         self.assertIn('#P: attribute width="50%" is a percentage', err)
 
 
+class ErrorsNameTheObject(unittest.TestCase):
+    def test_core_errors_name_the_object_not_its_position(self):
+        doc = Doc(self, MM, '<rect id="ok" x="10" y="10" width="40" height="40"/>'
+                            '<path id="bow" d="M 100 100 L 150 150 L 150 100 L 100 150 Z"/>'
+                            '<path id="hook" d="M 10 100 h 50 v 50 h -50"/>')
+        # Measure asks the core one path at a time: it used to call every one "the first".
+        _, err, _ = doc.run(Measure, "--id=ok", "--id=bow")
+        self.assertIn("#bow crosses itself", err)
+        self.assertNotIn("first", err)
+        svg, err, data = doc.run(Normalize, "--id=ok", "--id=hook")
+        self.assertIsNone(svg)
+        self.assertEqual(data, b"")
+        self.assertIn("#hook is open", err)
+
+
 if __name__ == "__main__":
     unittest.main()
