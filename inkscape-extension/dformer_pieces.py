@@ -33,6 +33,9 @@ SHAPES = (
 #: Geometry attributes a shape loses when it is rewritten as a <path>.
 GEOMETRY_ATTRS = ("x", "y", "width", "height", "rx", "ry", "cx", "cy", "r", "points", "x1", "y1", "x2", "y2")
 
+#: sodipodi attributes that do not describe the shape: the object's lock stays on.
+KEEP_SODIPODI = ("{%s}insensitive" % inkex.NSS["sodipodi"],)
+
 #: Id prefix of everything D-former writes (layers and groups); never read back as a piece.
 OWN_PREFIX = "dformer-"
 
@@ -270,7 +273,7 @@ def replace_outline(elem, d):
     (sodipodi:type arcs and stars) is dropped so Inkscape does not regenerate the old shape."""
     if isinstance(elem, inkex.PathElement):
         for key in list(elem.attrib):
-            if key.startswith("{%s}" % inkex.NSS["sodipodi"]):
+            if key.startswith("{%s}" % inkex.NSS["sodipodi"]) and key not in KEEP_SODIPODI:
                 del elem.attrib[key]
         elem.set("d", d)
         return elem
@@ -279,5 +282,7 @@ def replace_outline(elem, d):
         if key not in GEOMETRY_ATTRS:
             new.attrib[key] = value  # raw: inkex.set() would round a transform to 6 digits
     new.set("d", d)
+    for child in list(elem):  # <title>, <desc> (Object Properties), animations
+        new.append(child)
     elem.replace_with(new)
     return new

@@ -150,5 +150,20 @@ class ErrorsNameTheObject(unittest.TestCase):
         self.assertNotIn("304.8", err)
 
 
+class InPlace(unittest.TestCase):
+    def test_normalize_keeps_title_description_and_lock(self):
+        doc = Doc(self, MM, '<rect id="A" x="10" y="10" width="60" height="40"><title>Left side</title></rect>'
+                            '<path id="B" d="M 100 100 h 30 v 30 h -30 z" sodipodi:insensitive="true" '
+                            'sodipodi:nodetypes="cccc"><desc>right</desc></path>')
+        svg, err, _ = doc.run(Normalize, "--id=A", "--id=B")
+        self.assertEqual(err, "")
+        a, b = svg.getElementById("A"), svg.getElementById("B")
+        self.assertIsInstance(a, inkex.PathElement)
+        self.assertEqual([c.text for c in a], ["Left side"])
+        self.assertEqual([c.text for c in b], ["right"])
+        self.assertEqual(b.get("sodipodi:insensitive"), "true")
+        self.assertIsNone(b.get("sodipodi:nodetypes"), "node types describe the old outline")
+
+
 if __name__ == "__main__":
     unittest.main()
