@@ -7,12 +7,17 @@ checks — becomes ``inkex.AbortExtension``: Inkscape shows it as an error and, 
 writer never ran, the document is unchanged.
 """
 
+import re
+
 import inkex
 
 from dformer_bridge import CoreError
-from dformer_pieces import describe, selected_shapes
+from dformer_pieces import describe, name_pieces, selected_shapes
 
 UNITS = ("mm", "cm", "in", "pt", "pc", "px")
+
+_NUMBER = r"([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)"
+_MISMATCH = re.compile(r"different perimeters \(" + _NUMBER + " and " + _NUMBER + ";")
 
 
 class DformerEffect(inkex.EffectExtension):
@@ -66,6 +71,7 @@ class DformerEffect(inkex.EffectExtension):
                 f"Select {want} closed path{'s' if (high or low) != 1 else ''} "
                 f"(or groups of them); {len(shapes)} selected."
             )
+        self.shapes = shapes
         return shapes
 
     # -- the effect --------------------------------------------------------------------------
@@ -73,10 +79,28 @@ class DformerEffect(inkex.EffectExtension):
     def compute(self):
         raise NotImplementedError
 
+    def user_message(self, message):
+        """A core message for the student: pieces named by object, and the two perimeters of
+        a mismatch (the core gives raw user units) in the user's unit."""
+        shapes = getattr(self, "shapes", [])
+        message = name_pieces(message, shapes)
+
+        def perimeters(match):
+            a, b = (float(v) for v in match.groups())
+            names = [describe(e) for e in shapes[:2]] if len(shapes) >= 2 else ["", ""]
+            return "different perimeters (" + " and ".join(
+                f"{name + ' ' if name else ''}{self.fmt(v)}" for name, v in zip(names, (a, b))
+            ) + ";"
+
+        try:
+            return _MISMATCH.sub(perimeters, message)
+        except CoreError:  # an unknown display unit: keep the core's numbers
+            return message
+
     def effect(self):
         try:
             write = self.compute()
         except CoreError as err:
-            raise inkex.AbortExtension(str(err)) from err
+            raise inkex.AbortExtension(self.user_message(str(err))) from err
         if write is not None:
             write()

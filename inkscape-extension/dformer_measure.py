@@ -4,9 +4,9 @@ outlines, in the document's unit, as measured by the core (relative error <= 1e-
 
 import inkex
 
-from dformer_bridge import call_all
+from dformer_bridge import CoreError, run_batch
 from dformer_effect import DformerEffect
-from dformer_pieces import describe, read_pieces
+from dformer_pieces import describe, name_pieces, read_pieces
 
 
 class Measure(DformerEffect):
@@ -15,7 +15,10 @@ class Measure(DformerEffect):
     def compute(self):
         shapes = self.pieces()
         pieces = read_pieces(shapes)
-        results = call_all([{"op": "measure", "path": p} for p in pieces])
+        results = run_batch([{"op": "measure", "path": p} for p in pieces])
+        for elem, m in zip(shapes, results):
+            if "error" in m:  # each request has one path: the core calls every one "the first"
+                raise CoreError(name_pieces(m["error"], [elem]))
         unit = self.unit()
         lines = []
         for elem, m in zip(shapes, results):
