@@ -120,6 +120,48 @@ fn ellipses_at_quarter_offset_keep_lengths_area_and_are_convex() {
     assert!(v > 0.1 * flat.powf(1.5) / 10.0, "a real volume, got {v}");
 }
 
+/// A w × h rectangle with corners rounded to radius r (quarter-circle cubics), counter-clockwise.
+fn rounded_rectangle(w: f64, h: f64, r: f64) -> Contour {
+    let k = K * r;
+    let corner = |cx: f64, cy: f64, a0: f64| {
+        // Quarter arc from angle a0 to a0 + 90° about (cx, cy): its two end knots.
+        let (c0, s0, c1, s1) = (a0.cos(), a0.sin(), (a0 + std::f64::consts::FRAC_PI_2).cos(), (a0 + std::f64::consts::FRAC_PI_2).sin());
+        let p0 = Point::new(cx + r * c0, cy + r * s0);
+        let p1 = Point::new(cx + r * c1, cy + r * s1);
+        [
+            Knot { anchor: p0, left: p0, right: Point::new(p0.x - k * s0, p0.y + k * c0) },
+            Knot { anchor: p1, left: Point::new(p1.x + k * s1, p1.y - k * c1), right: p1 },
+        ]
+    };
+    let q = std::f64::consts::FRAC_PI_2;
+    let knots: Vec<Knot> = [corner(w - r, r, -q), corner(w - r, h - r, 0.0), corner(r, h - r, q), corner(r, r, 2.0 * q)]
+        .into_iter()
+        .flatten()
+        .collect();
+    Contour::new(knots, 0).unwrap()
+}
+
+/// Regression: a rounded rectangle glued to a circle (both convex) never converged. Its D-form
+/// has nearly flat regions whose chords settle slowly, and the solver's step budgets dropped the
+/// right branch before it got there.
+#[test]
+fn rounded_rectangle_with_circle_converges_to_a_convex_shape() {
+    let r = rounded_rectangle(60.0, 40.0, 10.0);
+    let c = circle_like(&r);
+    let p = perimeter(&r);
+    let s = run(&r, &c, 0.1 * p, 128);
+    assert!(s.stats.converged, "wanted converged, got {:?}", s.stats);
+    assert_closed(&s);
+    assert!(s.stats.max_strain < 1e-3, "max strain: wanted < 1e-3, got {}", s.stats.max_strain);
+    let (v, a) = volume_area(&s);
+    let flat = r.signed_area().abs() + c.signed_area().abs();
+    assert!((a - flat).abs() / flat < 2e-3, "area: wanted {flat}, got {a}");
+    let cv = convexity_violation(&s);
+    assert!(cv < 1e-5, "a vertex lies {cv} (relative) outside a face plane: not convex");
+    let v64 = run(&r, &c, 0.1 * p, 64).stats.volume;
+    assert!((v64 - v).abs() / v < 5e-3, "volume 64 vs 128 seam vertices: {v64} vs {v}");
+}
+
 #[test]
 fn volume_is_the_same_at_two_resolutions() {
     let e = ellipse(2.0, 1.0);

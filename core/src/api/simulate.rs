@@ -19,7 +19,7 @@ pub struct SimulateOptionsDto {
     /// A previous result's `vertices`, to start from (live sliders).
     #[serde(default)]
     pub warm: Option<Vec<[f64; 3]>>,
-    /// Cap on solver steps (default 200).
+    /// Cap on solver steps (default [`crate::simulate::options::DEFAULT_MAX_ITERATIONS`]).
     #[serde(default)]
     pub max_iterations: Option<f64>,
 }

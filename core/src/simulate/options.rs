@@ -9,8 +9,9 @@ pub const DEFAULT_RESOLUTION: usize = 256;
 pub const MIN_RESOLUTION: usize = 8;
 /// Most seam vertices (beyond this the solve stops being interactive).
 pub const MAX_RESOLUTION: usize = 4096;
-/// Default cap on Levenberg–Marquardt steps.
-pub const DEFAULT_MAX_ITERATIONS: usize = 1000;
+/// Default cap on Levenberg–Marquardt steps: room for the solver's patient second pass (see
+/// `solver::PATIENT`) after a quick first pass of at most 1,000 steps.
+pub const DEFAULT_MAX_ITERATIONS: usize = 5000;
 
 /// Checked options. `warm` holds a previous result's vertices (seam order), if any.
 #[derive(Debug, Clone, PartialEq)]

@@ -412,8 +412,26 @@ fn relax(
     Relaxed { iterations, flips, converged }
 }
 
-/// Steps allowed to one multistart attempt on the coarsest level.
-const ATTEMPT_BUDGET: usize = 60;
+/// Step budgets of one pass of the cold solve: per multistart attempt on the coarsest level, per
+/// refinement level while other starts remain, and in all (`cap`, counted with the steps of
+/// earlier passes).
+#[derive(Debug, Clone, Copy)]
+struct Patience {
+    attempt: usize,
+    level: usize,
+    cap: usize,
+}
+
+/// The first pass: a healthy start needs a few dozen steps per level (the whole 32→256 solve of
+/// two ellipses takes ~100–400), so a start that needs more is dropped for the next one.
+const QUICK: Patience = Patience { attempt: 60, level: 150, cap: 1000 };
+
+/// The second pass, run only when the first found no convex isometric branch: pieces with
+/// straight stretches (rectangles, rounded rectangles, polygons) give D-forms with nearly flat
+/// regions, whose chords sit between nearly coplanar triangles and take many steps and flips to
+/// settle (a rounded 60×40 rectangle glued to a circle: ~1,200 steps, ~40 ms native at 256 seam
+/// vertices) — longer than the quick budgets, but the branch is right.
+const PATIENT: Patience = Patience { attempt: 2000, level: 2000, cap: usize::MAX };
 
 /// Saddle heights tried by the multistart, most likely first.
 const LIFTS: [f64; 8] = [1.0, 3.0, 2.0, 0.5, 5.0, 1.5, 8.0, 0.25];
@@ -432,12 +450,6 @@ fn worst_reflex(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
         .flat_map(|p| tri[p].chords().into_iter().filter_map(move |(i, j)| reflex_sine(x, &tri[p], p, i, j)))
         .fold(0.0, f64::max)
 }
-
-/// Steps allowed to one refinement level of a cold solve while other saddle heights remain to
-/// be tried. A healthy level needs a few dozen steps (the whole 32→256 solve takes ~100–400);
-/// a level that needs more has been laid onto a wrong isometric branch (a near-tie in the flips
-/// tipped the wrong way), and the next start is cheaper than grinding it to `max_iterations`.
-const LEVEL_BUDGET: usize = 150;
 
 /// Strain below which a coarser level (relaxed only to a step of 1e-6 of the size) counts as
 /// solved: its solution is only a start for the next level, which polishes it.
@@ -467,7 +479,7 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
     let pieces = glue.sample(options.resolution);
     let mut tri = [triangulate(&pieces, 0)?, triangulate(&pieces, 1)?];
     let mut x = resample(w, pieces.n);
-    let r = relax(&pieces, &mut x, &mut tri, options.max_iterations.max(1), STEP_TOL, Orientation::Kept);
+    let r = relax(&pieces, &mut x, &mut tri, options.max_iterations.min(QUICK.cap).max(1), STEP_TOL, Orientation::Kept);
     if is_good(&x, &tri, r.converged) {
         let solution = Solution { x, tri, iterations: r.iterations, flips: r.flips, converged: true };
         return Ok((pieces, solution));
@@ -493,13 +505,13 @@ fn multistart(
     tri: &[Triangulation; 2],
     from: usize,
     step_tol: f64,
-    options: &SimulateOptions,
+    patience: Patience,
     steps: &mut (usize, usize),
 ) -> Option<(Vec<V3>, [Triangulation; 2], bool, usize)> {
     let mut best: Option<(Vec<V3>, [Triangulation; 2], bool, usize, f64)> = None;
     for (k, &lift) in LIFTS.iter().enumerate().skip(from) {
         let (mut x, mut t) = (initial_guess(pieces, lift), tri.clone());
-        let budget = options.max_iterations.saturating_sub(steps.0).clamp(1, ATTEMPT_BUDGET);
+        let budget = patience.cap.saturating_sub(steps.0).clamp(1, patience.attempt);
         let r = relax(pieces, &mut x, &mut t, budget, step_tol, Orientation::Free);
         steps.0 += r.iterations;
         steps.1 += r.flips;
@@ -511,7 +523,7 @@ fn multistart(
         if best.as_ref().is_none_or(|b| strain < b.4) {
             best = Some((x, t, r.converged, k, strain));
         }
-        if steps.0 >= options.max_iterations {
+        if steps.0 >= patience.cap {
             break;
         }
     }
@@ -522,13 +534,15 @@ fn multistart(
 /// (64, 128, …) laid onto the last ([`upsample`]) and relaxed. Near-ties in the flips (chords
 /// between nearly coplanar triangles) can tip a level into a wrong isometric branch that does
 /// not converge; which way a tie tips depends on the last bits of libm (WASM and native
-/// differ). So a branch whose level needs more than [`LEVEL_BUDGET`] steps, or ends unconverged
+/// differ). So a branch whose level needs more than its budget of steps ([`QUICK`]), or ends unconverged
 /// or dented, is abandoned and the whole coarse-to-fine path is retried from the next saddle
 /// height. When no height gives a good start on the coarsest level (at some offsets the 32-gon's
 /// only reachable branch is a collapsed one, strain ≈ 0.1), the ladder starts one level finer
 /// (64, …). The last height of the last rung (or the last of the step budget) runs to the end.
 /// The answer is the first good branch, else the best one that reached the finest level
 /// (converged first, then least strain). Deterministic: heights and rungs in a fixed order.
+/// All of this runs first with the [`QUICK`] budgets; only when that finds no good branch does
+/// it run again with the [`PATIENT`] ones, up to `max_iterations` steps in all.
 fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solution)> {
     let n = options.resolution;
     let mut levels = vec![n];
@@ -536,8 +550,38 @@ fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Sol
         levels.push(levels[levels.len() - 1] / 2);
     }
     levels.reverse();
-    let mut samples: Vec<SeamPieces> = levels.iter().map(|&m| glue.sample(m)).collect();
+    let samples: Vec<SeamPieces> = levels.iter().map(|&m| glue.sample(m)).collect();
     let mut steps = (0usize, 0usize);
+    let cap = options.max_iterations;
+    let quick = Patience { cap: QUICK.cap.min(cap), ..QUICK };
+    let mut best = ladder(&samples, &levels, quick, &mut steps)?;
+    if !best.as_ref().is_some_and(|b| b.3) && steps.0 < cap {
+        let patient = ladder(&samples, &levels, Patience { cap, ..PATIENT }, &mut steps)?;
+        if let Some(p) = patient {
+            // Good first, then converged, then without a dent, then least strain.
+            let rank = |b: &Branch| {
+                let undented = worst_reflex(&b.0, &b.1) <= DENT_SINE;
+                (b.3, b.2, undented, -max_strain(&b.0, &bars(&samples[samples.len() - 1], &b.1)))
+            };
+            if best.as_ref().is_none_or(|b| rank(&p) > rank(b)) {
+                best = Some(p);
+            }
+        }
+    }
+    let Some((x, tri, converged, _)) = best else {
+        return Err(Error::Infeasible { reason: "No start could be tried.".into() });
+    };
+    let mut samples = samples;
+    let pieces = samples.pop().expect("at least one level");
+    Ok((pieces, Solution { x, tri, iterations: steps.0, flips: steps.1, converged }))
+}
+
+/// A finest-level branch: positions, triangulations, converged, good (converged without a dent).
+type Branch = (Vec<V3>, [Triangulation; 2], bool, bool);
+
+/// One pass of the coarse-to-fine ladder with the step budgets of `patience` (see [`solve_cold`]):
+/// the first good branch, else the best one that reached the finest level.
+fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patience, steps: &mut (usize, usize)) -> Result<Option<Branch>> {
     let mut best: Option<(Vec<V3>, [Triangulation; 2], bool, f64)> = None;
     // Coarsest level of the ladder: 32 first; when no height gives a good start there (a
     // polygon that coarse can make a wrong branch the only one within reach), 64, and so on.
@@ -548,12 +592,12 @@ fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Sol
         let mut from = 0;
         while from < LIFTS.len() {
             let Some((mut x, mut tri, mut converged, next)) =
-                multistart(&samples[first], &coarse_tri, from, coarse_tol, options, &mut steps)
+                multistart(&samples[first], &coarse_tri, from, coarse_tol, patience, steps)
             else {
                 break;
             };
             from = next;
-            let out_of_steps = steps.0 >= options.max_iterations;
+            let out_of_steps = steps.0 >= patience.cap;
             if from >= LIFTS.len() && !final_rung && !out_of_steps {
                 // No good start on this rung: climb to the next one.
                 continue 'ladder;
@@ -563,9 +607,9 @@ fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Sol
                 let (pc, pf) = (&samples[li - 1], &samples[li]);
                 let mut tf = [refine(&tri, pf, 0)?, refine(&tri, pf, 1)?];
                 let mut xf = upsample(pc, &x, &tri, pf);
-                let remaining = options.max_iterations.saturating_sub(steps.0);
+                let remaining = patience.cap.saturating_sub(steps.0);
                 let retry = (from < LIFTS.len() || !final_rung) && remaining > 0;
-                let budget = if retry { remaining.min(LEVEL_BUDGET) } else { remaining.max(1) };
+                let budget = if retry { remaining.min(patience.level) } else { remaining.max(1) };
                 let last = li + 1 == levels.len();
                 let r = relax(pf, &mut xf, &mut tf, budget, if last { STEP_TOL } else { 1e-6 }, Orientation::Kept);
                 steps.0 += r.iterations;
@@ -582,21 +626,16 @@ fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Sol
             }
             let pieces = &samples[levels.len() - 1];
             if is_good(&x, &tri, converged) {
-                best = Some((x, tri, true, 0.0));
-                break 'ladder;
+                return Ok(Some((x, tri, true, true)));
             }
             let strain = max_strain(&x, &bars(pieces, &tri));
             if best.as_ref().is_none_or(|b| (converged, -strain) > (b.2, -b.3)) {
                 best = Some((x, tri, converged, strain));
             }
-            if steps.0 >= options.max_iterations {
+            if steps.0 >= patience.cap {
                 break 'ladder;
             }
         }
     }
-    let Some((x, tri, converged, _)) = best else {
-        return Err(Error::Infeasible { reason: "No start could be tried.".into() });
-    };
-    let pieces = samples.pop().expect("at least one level");
-    Ok((pieces, Solution { x, tri, iterations: steps.0, flips: steps.1, converged }))
+    Ok(best.map(|(x, tri, converged, _)| (x, tri, converged, false)))
 }
