@@ -450,8 +450,20 @@ function dformer_selectionKey() {
     for (var i = 0; i < c.paths.length; i++) {
       var p = c.paths[i].item;
       var sel = [];
-      for (var j = 0; j < p.pathPoints.length; j++) if (p.pathPoints[j].selected == PathPointSelection.ANCHORPOINT) sel.push(j);
-      parts.push(c.paths[i].id + "|" + p.pathPoints.length + "|" + p.closed + "|" + p.geometricBounds.join(",") + "|" + sel.join(","));
+      // Every anchor and handle goes into two weighted sums: moving a point inside the bounds
+      // (a notch, a handle) or re-ordering the points (rotating a square by 90°) leaves
+      // geometricBounds alone but must still make the panel read the path again.
+      var h1 = 0, h2 = 0;
+      var n = p.pathPoints.length;
+      for (var j = 0; j < n; j++) {
+        var pp = p.pathPoints[j];
+        if (pp.selected == PathPointSelection.ANCHORPOINT) sel.push(j);
+        var a = pp.anchor, l = pp.leftDirection, r = pp.rightDirection;
+        h1 += (j + 1) * (a[0] + 3 * a[1] + 5 * l[0] + 7 * l[1] + 11 * r[0] + 13 * r[1]);
+        h2 += ((j % 7) + 1) * (2 * a[0] - a[1]) + ((j % 5) + 2) * (l[0] - 3 * r[1]) + ((j % 3) + 3) * (r[0] - 5 * l[1]);
+      }
+      parts.push(c.paths[i].id + "|" + n + "|" + p.closed + "|" + p.geometricBounds.join(",") + "|" +
+        dformer_number(h1) + "," + dformer_number(h2) + "|" + sel.join(","));
     }
     return { key: parts.join(";") };
   });

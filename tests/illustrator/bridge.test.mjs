@@ -125,6 +125,29 @@ test('no selection → ok with no items; selectionKey changes when geometry or a
   assert.deepEqual(call(h, 'dformer_selection').items, []);
 });
 
+test('selectionKey changes when a point moves inside the bounds or the points are re-ordered (no stale Apply)', () => {
+  // A notched outline: anchor 3 is inside the bounding box, so dragging it with the Direct
+  // Selection tool changes the outline but not geometricBounds.
+  const h = createHost({ shapes: [
+    { name: 'N', polygon: [[0, 0], [100, 0], [100, 100], [50, 50], [0, 100]] },
+    { name: 'S', polygon: [[200, 0], [210, 0], [210, 10], [200, 10]] },
+  ] });
+  const N = h.find('N');
+  const k1 = call(h, 'dformer_selectionKey').key;
+  N.pathPoints[3].anchor = [50, 40];
+  const k2 = call(h, 'dformer_selectionKey').key;
+  assert.notEqual(k2, k1, 'moving an interior anchor changes the key');
+  N.pathPoints[3].leftDirection = [45, 45];
+  const k3 = call(h, 'dformer_selectionKey').key;
+  assert.notEqual(k3, k2, 'moving a handle inside the bounds changes the key');
+  // Rotating the square by 90° about its centre: same bounds, same length, new first anchor.
+  const S = h.find('S');
+  S._setPoints([[210, 0], [210, 10], [200, 10], [200, 0]].map((a) => ({ anchor: a, left: a, right: a })));
+  const k4 = call(h, 'dformer_selectionKey').key;
+  assert.notEqual(k4, k3, 're-ordered points change the key');
+  assert.equal(call(h, 'dformer_selectionKey').key, k4, 'stable when nothing changes');
+});
+
 /** A payload like the panel's: scale A about its first anchor, one piece per path with holes/labels/marks. */
 function payloadFor(sel, scale = 1.1) {
   const A = sel.items.find((x) => x.name === 'A');
