@@ -756,13 +756,19 @@ function dformer_write(doc, plan) {
     for (var r = 0; r < roles.length; r++) {
       var L = plan.layers[roles[r]];
       if (!L.needed) continue;
+      // Roles may share one layer name (e.g. everything on "Laser", told apart by colour):
+      // create that layer once, not once per role.
+      for (var q = 0; q < r && !L.layer; q++) {
+        var M = plan.layers[roles[q]];
+        if (M.needed && M.layer && M.name === L.name) L.layer = M.layer;
+      }
       if (!L.layer) {
         L.layer = doc.layers.add();
         L.layer.name = L.name;
         L.layer.color = dformer_rgb(L.color);
         journal.layers.push(L.layer);
       }
-      layerNames.push(L.name);
+      if (dformer_indexIn(layerNames, L.name) < 0) layerNames.push(L.name);
     }
     for (var k = 0; k < plan.pieces.length; k++) {
       var pc = plan.pieces[k];

@@ -244,6 +244,23 @@ test('re-applying replaces the previous D-former groups instead of stacking dupl
   assert.deepEqual(cut.groupItems.length, 4, 'replace:false keeps the old groups');
 });
 
+test('roles that share one layer name write to one layer, and re-applying replaces on it', () => {
+  const h = twoShapes();
+  const sel = call(h, 'dformer_selection');
+  const p = payloadFor(sel);
+  p.layers = { cut: { name: 'Laser', color: [255, 0, 0] }, score: { name: 'Laser', color: [0, 0, 255] }, engrave: { name: 'Laser', color: [0, 0, 0] } };
+  const r = call(h, 'dformer_apply', p);
+  assert.equal(r.ok, true, r.error);
+  assert.deepEqual(r.layers, ['Laser']);
+  const named = () => h.doc._layers.filter((l) => l.name === 'Laser');
+  assert.equal(named().length, 1, 'one "Laser" layer, not one per role');
+  assert.equal(named()[0].groupItems.length, 6, 'connectors, marks and labels of both pieces');
+  delete p.updates;
+  assert.equal(call(h, 'dformer_apply', p).ok, true);
+  assert.equal(named().length, 1);
+  assert.equal(named()[0].groupItems.length, 6, 're-applying replaces the groups instead of stacking them');
+});
+
 test('an invalid apply changes nothing in the document and says what is wrong', () => {
   const cases = [
     ['unknown id', (p) => { p.updates[0].id = 'u:999999'; }, /updates\[0\]: the path \(u:999999\) is no longer in the document/],
