@@ -375,6 +375,10 @@ function dformer_collect(doc) {
   function visit(it) {
     var t = it.typename;
     var label = dformer_nameOf(it);
+    // Selecting a group selects everything in it, also what the student hid or locked there
+    // (construction lines, a reference copy): such items are not pieces, and could not be written.
+    if (it.hidden) { skipped.push({ name: label, reason: "hidden inside a selected group: D-former leaves hidden art alone (Object > Show All to use it)" }); return; }
+    if (it.locked) { skipped.push({ name: label, reason: "locked inside a selected group: unlock it (Object > Unlock All) to use it" }); return; }
     if (t === "PathItem") takePath(it, label);
     else if (t === "GroupItem") {
       var g = /** @type {GroupItem} */ (it);

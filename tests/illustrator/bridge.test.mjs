@@ -111,6 +111,20 @@ test('selection rules: groups descended, one-sub-path compound unwrapped, others
   assert.equal(Object.keys(reasons).length, 6);
 });
 
+test('hidden or locked art inside a selected group is skipped, not read as a piece', () => {
+  const h = createHost({ shapes: [
+    { name: 'A', rect: { top: 0, left: 0, width: 10, height: 10 }, group: 'G' },
+    { name: 'B', rect: { top: 0, left: 20, width: 10, height: 10 }, group: 'G' },
+    { name: 'construction line', polygon: [[0, 0], [30, 0]], closed: false, group: 'G', hidden: true },
+    { name: 'reference copy', rect: { top: 0, left: 40, width: 10, height: 10 }, group: 'G', locked: true },
+  ] });
+  const r = call(h, 'dformer_selection');
+  assert.deepEqual(r.items.map((x) => x.name).sort(), ['A', 'B']);
+  const reasons = Object.fromEntries(r.skipped.map((s) => [s.name, s.reason]));
+  assert.match(reasons['construction line'], /hidden inside a selected group/);
+  assert.match(reasons['reference copy'], /locked inside a selected group: unlock it/);
+});
+
 test('no selection → ok with no items; selectionKey changes when geometry or anchor selection changes', () => {
   const h = twoShapes();
   const k1 = call(h, 'dformer_selectionKey').key;
