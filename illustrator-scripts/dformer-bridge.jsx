@@ -750,6 +750,11 @@ function dformer_write(doc, plan) {
   var groupNames = [];
   var layerNames = [];
   var old = [];
+  // Layers.add() makes the new layer the current one; the student's next shape must still go
+  // where they were drawing, not onto the laser's Engrave layer.
+  /** @type {*} */
+  var active = null;
+  try { active = doc.activeLayer; } catch (e0) { active = null; }
   try {
     for (var u = 0; u < plan.updates.length; u++) {
       var item = plan.updates[u].item;
@@ -809,10 +814,18 @@ function dformer_write(doc, plan) {
   } catch (e) {
     var err = /** @type {*} */ (e);
     var undone = dformer_undo(journal);
+    dformer_restoreActive(doc, active);
     dformer_fail("Illustrator reported an error while writing: " + (err && err.message ? err.message : String(err)) +
       (undone ? " (the changes were undone)." : " (some changes could not be undone; use Edit > Undo)."));
   }
+  dformer_restoreActive(doc, active);
   return { created: created, updated: plan.updates.length, groups: groupNames, layers: layerNames };
+}
+
+/** Make `layer` the current layer again if it still exists (best effort). @param {Document} doc @param {*} layer */
+function dformer_restoreActive(doc, layer) {
+  if (!layer) return;
+  try { if (doc.activeLayer != layer) doc.activeLayer = layer; } catch (e) { /* removed or not settable: leave it */ }
 }
 
 /** @param {PathItem} p @returns {Array<PointType>} */

@@ -258,6 +258,15 @@ test('re-applying replaces the previous D-former groups instead of stacking dupl
   assert.deepEqual(cut.groupItems.length, 4, 'replace:false keeps the old groups');
 });
 
+test('apply leaves the layer the student was drawing on as the current layer', () => {
+  const h = twoShapes();
+  const sel = call(h, 'dformer_selection');
+  assert.equal(h.doc.activeLayer.name, 'Layer 1');
+  assert.equal(call(h, 'dformer_apply', payloadFor(sel)).ok, true);
+  assert.ok(h.doc._layers.some((l) => l.name === 'Engrave'), 'the Engrave layer was created');
+  assert.equal(h.doc.activeLayer.name, 'Layer 1', 'new shapes still go to Layer 1, not to Engrave');
+});
+
 test('roles that share one layer name write to one layer, and re-applying replaces on it', () => {
   const h = twoShapes();
   const sel = call(h, 'dformer_selection');
