@@ -32,7 +32,10 @@
     /** @param {*} it */
     function visit(it) {
       var label = it.name ? it.name : "<" + it.typename + ">";
-      if (it.typename === "PathItem") {
+      // Hidden or locked art inside a selected group (construction lines, a reference copy) is
+      // not an outline to measure or scale, and Illustrator cannot change it.
+      if (it.hidden || it.locked) skipped.push(label + (it.hidden ? " (hidden)" : " (locked)"));
+      else if (it.typename === "PathItem") {
         if (it.clipping || it.guides || it.pathPoints.length < 2) skipped.push(label);
         else paths.push(it);
       } else if (it.typename === "GroupItem") {

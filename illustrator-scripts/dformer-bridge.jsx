@@ -375,6 +375,10 @@ function dformer_collect(doc) {
   function visit(it) {
     var t = it.typename;
     var label = dformer_nameOf(it);
+    // Selecting a group selects everything in it, also what the student hid or locked there
+    // (construction lines, a reference copy): such items are not pieces, and could not be written.
+    if (it.hidden) { skipped.push({ name: label, reason: "hidden inside a selected group: D-former leaves hidden art alone (Object > Show All to use it)" }); return; }
+    if (it.locked) { skipped.push({ name: label, reason: "locked inside a selected group: unlock it (Object > Unlock All) to use it" }); return; }
     if (t === "PathItem") takePath(it, label);
     else if (t === "GroupItem") {
       var g = /** @type {GroupItem} */ (it);
@@ -450,8 +454,20 @@ function dformer_selectionKey() {
     for (var i = 0; i < c.paths.length; i++) {
       var p = c.paths[i].item;
       var sel = [];
-      for (var j = 0; j < p.pathPoints.length; j++) if (p.pathPoints[j].selected == PathPointSelection.ANCHORPOINT) sel.push(j);
-      parts.push(c.paths[i].id + "|" + p.pathPoints.length + "|" + p.closed + "|" + p.geometricBounds.join(",") + "|" + sel.join(","));
+      // Every anchor and handle goes into two weighted sums: moving a point inside the bounds
+      // (a notch, a handle) or re-ordering the points (rotating a square by 90°) leaves
+      // geometricBounds alone but must still make the panel read the path again.
+      var h1 = 0, h2 = 0;
+      var n = p.pathPoints.length;
+      for (var j = 0; j < n; j++) {
+        var pp = p.pathPoints[j];
+        if (pp.selected == PathPointSelection.ANCHORPOINT) sel.push(j);
+        var a = pp.anchor, l = pp.leftDirection, r = pp.rightDirection;
+        h1 += (j + 1) * (a[0] + 3 * a[1] + 5 * l[0] + 7 * l[1] + 11 * r[0] + 13 * r[1]);
+        h2 += ((j % 7) + 1) * (2 * a[0] - a[1]) + ((j % 5) + 2) * (l[0] - 3 * r[1]) + ((j % 3) + 3) * (r[0] - 5 * l[1]);
+      }
+      parts.push(c.paths[i].id + "|" + n + "|" + p.closed + "|" + p.geometricBounds.join(",") + "|" +
+        dformer_number(h1) + "," + dformer_number(h2) + "|" + sel.join(","));
     }
     return { key: parts.join(";") };
   });
@@ -734,6 +750,11 @@ function dformer_write(doc, plan) {
   var groupNames = [];
   var layerNames = [];
   var old = [];
+  // Layers.add() makes the new layer the current one; the student's next shape must still go
+  // where they were drawing, not onto the laser's Engrave layer.
+  /** @type {*} */
+  var active = null;
+  try { active = doc.activeLayer; } catch (e0) { active = null; }
   try {
     for (var u = 0; u < plan.updates.length; u++) {
       var item = plan.updates[u].item;
@@ -744,13 +765,19 @@ function dformer_write(doc, plan) {
     for (var r = 0; r < roles.length; r++) {
       var L = plan.layers[roles[r]];
       if (!L.needed) continue;
+      // Roles may share one layer name (e.g. everything on "Laser", told apart by colour):
+      // create that layer once, not once per role.
+      for (var q = 0; q < r && !L.layer; q++) {
+        var M = plan.layers[roles[q]];
+        if (M.needed && M.layer && M.name === L.name) L.layer = M.layer;
+      }
       if (!L.layer) {
         L.layer = doc.layers.add();
         L.layer.name = L.name;
         L.layer.color = dformer_rgb(L.color);
         journal.layers.push(L.layer);
       }
-      layerNames.push(L.name);
+      if (dformer_indexIn(layerNames, L.name) < 0) layerNames.push(L.name);
     }
     for (var k = 0; k < plan.pieces.length; k++) {
       var pc = plan.pieces[k];
@@ -787,10 +814,18 @@ function dformer_write(doc, plan) {
   } catch (e) {
     var err = /** @type {*} */ (e);
     var undone = dformer_undo(journal);
+    dformer_restoreActive(doc, active);
     dformer_fail("Illustrator reported an error while writing: " + (err && err.message ? err.message : String(err)) +
       (undone ? " (the changes were undone)." : " (some changes could not be undone; use Edit > Undo)."));
   }
+  dformer_restoreActive(doc, active);
   return { created: created, updated: plan.updates.length, groups: groupNames, layers: layerNames };
+}
+
+/** Make `layer` the current layer again if it still exists (best effort). @param {Document} doc @param {*} layer */
+function dformer_restoreActive(doc, layer) {
+  if (!layer) return;
+  try { if (doc.activeLayer != layer) doc.activeLayer = layer; } catch (e) { /* removed or not settable: leave it */ }
 }
 
 /** @param {PathItem} p @returns {Array<PointType>} */

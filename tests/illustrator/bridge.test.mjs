@@ -111,6 +111,20 @@ test('selection rules: groups descended, one-sub-path compound unwrapped, others
   assert.equal(Object.keys(reasons).length, 6);
 });
 
+test('hidden or locked art inside a selected group is skipped, not read as a piece', () => {
+  const h = createHost({ shapes: [
+    { name: 'A', rect: { top: 0, left: 0, width: 10, height: 10 }, group: 'G' },
+    { name: 'B', rect: { top: 0, left: 20, width: 10, height: 10 }, group: 'G' },
+    { name: 'construction line', polygon: [[0, 0], [30, 0]], closed: false, group: 'G', hidden: true },
+    { name: 'reference copy', rect: { top: 0, left: 40, width: 10, height: 10 }, group: 'G', locked: true },
+  ] });
+  const r = call(h, 'dformer_selection');
+  assert.deepEqual(r.items.map((x) => x.name).sort(), ['A', 'B']);
+  const reasons = Object.fromEntries(r.skipped.map((s) => [s.name, s.reason]));
+  assert.match(reasons['construction line'], /hidden inside a selected group/);
+  assert.match(reasons['reference copy'], /locked inside a selected group: unlock it/);
+});
+
 test('no selection → ok with no items; selectionKey changes when geometry or anchor selection changes', () => {
   const h = twoShapes();
   const k1 = call(h, 'dformer_selectionKey').key;
@@ -123,6 +137,29 @@ test('no selection → ok with no items; selectionKey changes when geometry or a
   assert.equal(call(h, 'dformer_selectionKey').key, k3, 'stable when nothing changes');
   h.doc.selection = null;
   assert.deepEqual(call(h, 'dformer_selection').items, []);
+});
+
+test('selectionKey changes when a point moves inside the bounds or the points are re-ordered (no stale Apply)', () => {
+  // A notched outline: anchor 3 is inside the bounding box, so dragging it with the Direct
+  // Selection tool changes the outline but not geometricBounds.
+  const h = createHost({ shapes: [
+    { name: 'N', polygon: [[0, 0], [100, 0], [100, 100], [50, 50], [0, 100]] },
+    { name: 'S', polygon: [[200, 0], [210, 0], [210, 10], [200, 10]] },
+  ] });
+  const N = h.find('N');
+  const k1 = call(h, 'dformer_selectionKey').key;
+  N.pathPoints[3].anchor = [50, 40];
+  const k2 = call(h, 'dformer_selectionKey').key;
+  assert.notEqual(k2, k1, 'moving an interior anchor changes the key');
+  N.pathPoints[3].leftDirection = [45, 45];
+  const k3 = call(h, 'dformer_selectionKey').key;
+  assert.notEqual(k3, k2, 'moving a handle inside the bounds changes the key');
+  // Rotating the square by 90° about its centre: same bounds, same length, new first anchor.
+  const S = h.find('S');
+  S._setPoints([[210, 0], [210, 10], [200, 10], [200, 0]].map((a) => ({ anchor: a, left: a, right: a })));
+  const k4 = call(h, 'dformer_selectionKey').key;
+  assert.notEqual(k4, k3, 're-ordered points change the key');
+  assert.equal(call(h, 'dformer_selectionKey').key, k4, 'stable when nothing changes');
 });
 
 /** A payload like the panel's: scale A about its first anchor, one piece per path with holes/labels/marks. */
@@ -219,6 +256,32 @@ test('re-applying replaces the previous D-former groups instead of stacking dupl
   p.replace = false;
   assert.equal(call(h, 'dformer_apply', p).ok, true);
   assert.deepEqual(cut.groupItems.length, 4, 'replace:false keeps the old groups');
+});
+
+test('apply leaves the layer the student was drawing on as the current layer', () => {
+  const h = twoShapes();
+  const sel = call(h, 'dformer_selection');
+  assert.equal(h.doc.activeLayer.name, 'Layer 1');
+  assert.equal(call(h, 'dformer_apply', payloadFor(sel)).ok, true);
+  assert.ok(h.doc._layers.some((l) => l.name === 'Engrave'), 'the Engrave layer was created');
+  assert.equal(h.doc.activeLayer.name, 'Layer 1', 'new shapes still go to Layer 1, not to Engrave');
+});
+
+test('roles that share one layer name write to one layer, and re-applying replaces on it', () => {
+  const h = twoShapes();
+  const sel = call(h, 'dformer_selection');
+  const p = payloadFor(sel);
+  p.layers = { cut: { name: 'Laser', color: [255, 0, 0] }, score: { name: 'Laser', color: [0, 0, 255] }, engrave: { name: 'Laser', color: [0, 0, 0] } };
+  const r = call(h, 'dformer_apply', p);
+  assert.equal(r.ok, true, r.error);
+  assert.deepEqual(r.layers, ['Laser']);
+  const named = () => h.doc._layers.filter((l) => l.name === 'Laser');
+  assert.equal(named().length, 1, 'one "Laser" layer, not one per role');
+  assert.equal(named()[0].groupItems.length, 6, 'connectors, marks and labels of both pieces');
+  delete p.updates;
+  assert.equal(call(h, 'dformer_apply', p).ok, true);
+  assert.equal(named().length, 1);
+  assert.equal(named()[0].groupItems.length, 6, 're-applying replaces the groups instead of stacking them');
 });
 
 test('an invalid apply changes nothing in the document and says what is wrong', () => {

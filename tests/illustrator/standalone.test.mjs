@@ -109,3 +109,23 @@ test('both File > Scripts scripts carry identical unit and selection helpers', a
     assert.equal(helper(read(NORMALIZE), name), helper(read(MEASURE), name), `${name} differs between the two scripts`);
   }
 });
+
+test('Measure and Normalize leave hidden or locked art inside a selected group alone', () => {
+  const extra = () => [
+    { name: 'ghost', rect: { top: -100, left: -100, width: 400, height: 400 }, group: 'G', hidden: true },
+    { name: 'pinned', rect: { top: -100, left: 300, width: 5, height: 5 }, group: 'G', locked: true },
+  ];
+  const m = createHost({ units: 'mm', shapes: [...shapes(), ...extra()] });
+  const [msg] = m.runScript(MEASURE);
+  assert.doesNotMatch(msg, /^ghost:/m, 'a hidden path is not measured');
+  assert.match(msg, /Skipped \(not paths\): .*ghost \(hidden\)/);
+  const h = createHost({ units: 'mm', shapes: [...shapes(), ...extra()] });
+  const ghost = h.find('ghost'), pinned = h.find('pinned');
+  const before = [referenceLengthOf(ghost), referenceLengthOf(pinned)];
+  const lengths = ['A', 'B', 'C'].map((n) => referenceLengthOf(h.find(n)));
+  const [out] = h.runScript(NORMALIZE, answer(0));
+  assert.match(out, /^Target perimeter: /, out);
+  assert.deepEqual([referenceLengthOf(ghost), referenceLengthOf(pinned)], before, 'hidden and locked paths unchanged');
+  const want = Math.max(...lengths);
+  for (const n of ['A', 'B', 'C']) assert.ok(relErr(referenceLengthOf(h.find(n)), want) < 1e-9, `${n} scaled to the largest visible perimeter`);
+});
