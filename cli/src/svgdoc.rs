@@ -8,6 +8,7 @@
 //! markers, patterns and symbols, and D-former's own output layers (ids starting `dformer-`).
 
 use crate::units::{length_px, Scale};
+use crate::viewport;
 use kurbo::Affine;
 use roxmltree::{Document, Node};
 use std::fmt::Write;
@@ -160,8 +161,8 @@ impl<'input> SvgFile<'input> {
             .find(|c| c.tag_name().name() == "namedview")
             .and_then(|nv| nv.attribute((INKSCAPE_NS, "document-units")));
         let scale = Scale::new(
+            viewport::page_px_per_user(root)?,
             root.attribute("width"),
-            root.attribute("viewBox"),
             doc_units,
             unit,
         )?;
