@@ -6,14 +6,22 @@
   unequal scales a length depends on its direction, so no single unit fits a perimeter: that
   file is refused. A missing or percentage ``width``/``height`` is a share of the viewBox
   size (Inkscape's rule); without a viewBox one user unit is one px.
+- A nested ``<svg>`` maps its content into the rectangle ``x, y, width, height`` of its
+  parent's user space (percentages of the parent viewport, missing size = 100%) through its
+  own viewBox and ``preserveAspectRatio``, ``none`` included: that is an affine map like a
+  group's transform. Inkscape 1.2 ignores ``transform`` on ``<svg>`` elements, so do we.
 
 inkex 1.2 takes the larger of the two page scales whatever ``preserveAspectRatio`` says
-(``SvgDocumentElement._base_scale``), hence this module.
+(``SvgDocumentElement._base_scale``) and ignores nested viewports, hence this module.
 """
 
+import inkex
 from inkex.units import CONVERSIONS, convert_unit, parse_unit
 
 from dformer_bridge import CoreError
+
+#: Inkscape's page size when the root has neither a viewBox nor an absolute width/height.
+DEFAULT_SIZE = (300.0, 150.0)
 
 _ALIGN = {"min": 0.0, "mid": 0.5, "max": 1.0}
 
@@ -96,3 +104,57 @@ def page_px_per_user(svg):
             "page size and the viewBox (scale) proportional, or remove preserveAspectRatio."
         )
     return _scales(box, size[0], size[1], svg)[0]
+
+
+def _page_size(svg):
+    """The root viewport's size in root user units (what nested percentages refer to)."""
+    box = view_box(svg)
+    if box is not None:
+        return box[2], box[3]
+    size = []
+    for name, default in zip(("width", "height"), DEFAULT_SIZE):
+        try:
+            value, unit = length(svg, name)
+        except CoreError:
+            value, unit = None, None
+        size.append(value if unit == "px" and value > 0 else default)
+    return tuple(size)
+
+
+def _nested(elem, parent):
+    """(transform into the parent's user space, size of the viewport it makes)."""
+    def resolve(name, ref, default):
+        value, unit = length(elem, name)
+        return default if unit is None else ref * value / 100 if unit == "%" else value
+
+    x, y = resolve("x", parent[0], 0.0), resolve("y", parent[1], 0.0)
+    w, h = resolve("width", parent[0], parent[0]), resolve("height", parent[1], parent[1])
+    if not (w > 0 and h > 0):
+        raise CoreError(f"{_name(elem)}, which has zero or negative width or height (SVG draws nothing in it).")
+    box = view_box(elem)
+    if box is None:
+        return inkex.Transform(translate=(x, y)), (w, h)
+    sx, sy = _scales(box, w, h, elem)
+    align, _ = aspect(elem)
+    ax, ay = align if align is not None else (0.0, 0.0)
+    tx = x + (w - box[2] * sx) * ax - box[0] * sx
+    ty = y + (h - box[3] * sy) * ay - box[1] * sy
+    return inkex.Transform((sx, 0.0, 0.0, sy, tx, ty)), (box[2], box[3])
+
+
+def to_root(elem):
+    """Local coordinates -> root user units: the ``transform`` attributes of the element and
+    its ancestors and the viewports of nested ``<svg>`` ancestors, composed outermost first.
+    Transforms are read from the raw attributes (inkex 1.2's ``composed_transform()`` rounds
+    them to 6 digits)."""
+    chain = [elem] + [a for a in elem.ancestors() if isinstance(a, inkex.BaseElement)]
+    chain.reverse()
+    result = inkex.Transform()
+    size = _page_size(chain[0]) if isinstance(chain[0], inkex.SvgDocumentElement) else DEFAULT_SIZE
+    for node in chain[1:]:
+        if isinstance(node, inkex.SvgDocumentElement):
+            viewport, size = _nested(node, size)
+            result = result @ viewport
+        else:
+            result = result @ inkex.Transform(node.attrib.get("transform"))
+    return result

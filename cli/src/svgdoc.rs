@@ -3,9 +3,10 @@
 //!
 //! Scope (stated in `inkscape-extension/README.md`): `path`, `rect` (with `rx`/`ry`), `circle`,
 //! `ellipse`, `polygon` (and `polyline`/`line`, which the core reports as open); `transform`
-//! attributes on the shape and every ancestor group, composed. Not followed: `<use>` clones,
-//! nested `<svg>` viewports, CSS `transform` properties, shapes in `<defs>`, masks, clips,
-//! markers, patterns and symbols, and D-former's own output layers (ids starting `dformer-`).
+//! attributes on the shape and every ancestor group, and nested `<svg>` viewports
+//! (`crate::viewport`), composed. Not followed: `<use>` clones, CSS `transform` properties,
+//! shapes in `<defs>`, masks, clips, markers, patterns and symbols, and D-former's own output
+//! layers (ids starting `dformer-`).
 
 use crate::units::{length_px, Scale};
 use crate::viewport;
@@ -33,7 +34,6 @@ const NOT_DRAWN: &[&str] = &[
     "script",
     "foreignObject",
     "use",
-    "svg",
     "image",
     "text",
 ];
@@ -174,7 +174,9 @@ impl<'input> SvgFile<'input> {
         let mut out = Vec::new();
         let root = self.doc.root_element();
         let mut counter = 0usize;
-        walk(root, transform_of(root)?, &mut out, &mut counter)?;
+        // Inkscape 1.2 ignores `transform` on <svg> elements (the root's included).
+        let size = viewport::page_size(root);
+        walk(root, Affine::IDENTITY, size, &mut out, &mut counter)?;
         Ok(out)
     }
 }
@@ -182,6 +184,7 @@ impl<'input> SvgFile<'input> {
 fn walk<'a, 'input>(
     node: Node<'a, 'input>,
     ctm: Affine,
+    size: (f64, f64),
     out: &mut Vec<Shape<'a, 'input>>,
     counter: &mut usize,
 ) -> Result<(), String> {
@@ -201,6 +204,11 @@ fn walk<'a, 'input>(
             Some(id) => format!("#{id}"),
             None => format!("<{tag}> number {}", *counter + 1),
         };
+        if tag == "svg" {
+            let (map, inner) = viewport::nested(child, size)?;
+            walk(child, ctm * map, inner, out, counter)?;
+            continue;
+        }
         let local = ctm * transform_of(child).map_err(|e| format!("{what}: {e}"))?;
         if SHAPES.contains(&tag) {
             *counter += 1;
@@ -216,7 +224,7 @@ fn walk<'a, 'input>(
                 ctm: local,
             });
         } else {
-            walk(child, local, out, counter)?;
+            walk(child, local, size, out, counter)?;
         }
     }
     Ok(())
@@ -246,6 +254,21 @@ mod tests {
             "wanted scale then translate: (12, 2), got {p:?}"
         );
         assert_eq!(file.scale.unit, "mm");
+    }
+
+    #[test]
+    fn nested_svg_viewports_apply_and_svg_transforms_do_not_like_inkscape() {
+        // Inkscape 1.2 draws this rect 20 mm wide at x = 105 mm (--query-x/--query-width) and
+        // ignores transform on <svg> elements.
+        let text = r#"<svg xmlns="http://www.w3.org/2000/svg" width="200mm" height="200mm" viewBox="0 0 200 200" transform="scale(3)">
+            <svg x="100" y="100" width="50" viewBox="0 0 10 10" transform="scale(2)"><rect id="r" x="1" y="1" width="4" height="4"/></svg></svg>"#;
+        let file = SvgFile::parse(text, None).unwrap();
+        let shapes = file.shapes().unwrap();
+        let (a, b) = (
+            shapes[0].ctm * kurbo::Point::new(1.0, 1.0),
+            shapes[0].ctm * kurbo::Point::new(5.0, 5.0),
+        );
+        assert_eq!((a.x, b.x - a.x), (105.0, 20.0), "got {a:?} {b:?}");
     }
 
     #[test]

@@ -7,8 +7,14 @@
 //! direction, so a perimeter has no single value: such a file is refused. A missing or
 //! percentage `width`/`height` is that share of the viewBox size (Inkscape's rule); without a
 //! viewBox one user unit is one px.
+//!
+//! A nested `<svg>` maps its content into the rectangle `x, y, width, height` of its parent's
+//! user space (percentages of the parent viewport, missing size = 100%) through its own
+//! viewBox and `preserveAspectRatio`, `none` included: an affine map like a group's
+//! transform. Inkscape 1.2 ignores `transform` on `<svg>` elements, and so does this.
 
 use crate::units::length_px;
+use kurbo::Affine;
 use roxmltree::Node;
 use svgtypes::{Align, AspectRatio, Length, LengthUnit, ViewBox};
 
@@ -107,6 +113,63 @@ pub fn page_px_per_user(root: Node) -> Result<f64, String> {
     Ok(scales(vb, size[0], size[1], ar).0)
 }
 
+/// Inkscape's page size when the root has neither a viewBox nor an absolute width/height.
+const DEFAULT_SIZE: (f64, f64) = (300.0, 150.0);
+
+/// The page's viewport size in root user units (what nested percentages refer to).
+pub fn page_size(root: Node) -> (f64, f64) {
+    if let Some(vb) = view_box(root) {
+        return (vb.w, vb.h);
+    }
+    let abs = |name, default| match length(root, name) {
+        Ok(Len::Abs(v)) if v > 0.0 => v,
+        _ => default,
+    };
+    (abs("width", DEFAULT_SIZE.0), abs("height", DEFAULT_SIZE.1))
+}
+
+/// A nested `<svg>`: its map into the parent's user space, and the size of the viewport it
+/// makes for its content. `parent` is the parent viewport's size.
+pub fn nested(n: Node, parent: (f64, f64)) -> Result<(Affine, (f64, f64)), String> {
+    let resolve = |name, reference: f64, default: f64| {
+        Ok::<f64, String>(match length(n, name)? {
+            Len::Missing => default,
+            Len::Percent(p) => reference * p / 100.0,
+            Len::Abs(v) => v,
+        })
+    };
+    let (x, y) = (resolve("x", parent.0, 0.0)?, resolve("y", parent.1, 0.0)?);
+    let (w, h) = (
+        resolve("width", parent.0, parent.0)?,
+        resolve("height", parent.1, parent.1)?,
+    );
+    if !(w > 0.0 && h > 0.0) {
+        return Err(format!(
+            "{}, which has zero or negative width or height (SVG draws nothing in it)",
+            svg_name(n)
+        ));
+    }
+    let Some(vb) = view_box(n) else {
+        return Ok((Affine::translate((x, y)), (w, h)));
+    };
+    let ar = aspect(n);
+    let (sx, sy) = scales(vb, w, h, ar);
+    let (ax, ay) = match ar.align {
+        Align::None | Align::XMinYMin => (0.0, 0.0),
+        Align::XMidYMin => (0.5, 0.0),
+        Align::XMaxYMin => (1.0, 0.0),
+        Align::XMinYMid => (0.0, 0.5),
+        Align::XMidYMid => (0.5, 0.5),
+        Align::XMaxYMid => (1.0, 0.5),
+        Align::XMinYMax => (0.0, 1.0),
+        Align::XMidYMax => (0.5, 1.0),
+        Align::XMaxYMax => (1.0, 1.0),
+    };
+    let tx = x + (w - vb.w * sx) * ax - vb.x * sx;
+    let ty = y + (h - vb.h * sy) * ay - vb.y * sy;
+    Ok((Affine::new([sx, 0.0, 0.0, sy, tx, ty]), (vb.w, vb.h)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -166,5 +229,36 @@ mod tests {
         assert!(root_scale(r#"width="3em" viewBox="0 0 1 1""#)
             .unwrap_err()
             .contains("3em"));
+    }
+
+    #[test]
+    fn nested_viewports_map_like_inkscape() {
+        // Inkscape 1.2 (--query-x/--query-width, in mm): the rect at x 6 is drawn at 52 mm, 8 mm wide.
+        let text = r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 200 200">
+            <svg id="n" x="10" y="20" width="60" height="20" viewBox="5 5 10 10" preserveAspectRatio="xMaxYMax meet"/>
+            <svg id="p" x="10%" width="25%" height="50" viewBox="0 0 10 10" preserveAspectRatio="none"/>
+            <svg id="z" width="0"/></svg>"#;
+        let doc = roxmltree::Document::parse(text).unwrap();
+        let root = doc.root_element();
+        let kid = |id| {
+            root.children()
+                .find(|c| c.attribute("id") == Some(id))
+                .unwrap()
+        };
+        let (m, size) = nested(kid("n"), page_size(root)).unwrap();
+        let (p, q) = (
+            m * kurbo::Point::new(6.0, 6.0),
+            m * kurbo::Point::new(10.0, 10.0),
+        );
+        assert!(
+            (p.x - 52.0).abs() < 1e-12 && (q.x - p.x - 8.0).abs() < 1e-12,
+            "got {p:?} {q:?}"
+        );
+        assert_eq!(size, (10.0, 10.0));
+        // x = 10% of 200, width 25% of 200 = 50, height 50: none stretches 5 across, 5 down.
+        let (m, _) = nested(kid("p"), page_size(root)).unwrap();
+        assert_eq!(m.as_coeffs(), [5.0, 0.0, 0.0, 5.0, 20.0, 0.0]);
+        let e = nested(kid("z"), page_size(root)).unwrap_err();
+        assert!(e.contains("#z") && e.contains("zero"), "got {e}");
     }
 }

@@ -1,7 +1,8 @@
 """What a user unit measures on paper: the page's scale when its proportions differ from the
-viewBox's (``preserveAspectRatio`` meet, slice, none). The extension and the ``dformer``
-command are checked against closed forms (a square's perimeter in mm) and against Inkscape
-1.2's own ``--query-all``, which reports the bounding boxes Inkscape draws, in px."""
+viewBox's (``preserveAspectRatio`` meet, slice, none), and shapes inside nested ``<svg>``
+viewports. The extension and the ``dformer`` command are checked against closed forms (a
+rectangle's perimeter in mm) and against Inkscape 1.2's own ``--query-all``, which reports the
+bounding boxes Inkscape draws, in px."""
 
 import json
 import os
@@ -89,6 +90,65 @@ class PageScale(unittest.TestCase):
         self.assertEqual(proc.returncode, 1)
         self.assertIn('preserveAspectRatio="none"', proc.stderr)
 
+#: A 1 mm-per-unit page. A (4 x 4) sits in a 5x viewport: drawn 20 x 20 mm, perimeter 80 mm.
+#: S (8 x 8) in a viewport stretched 4x across and 2x down (none): 32 x 16 mm, 96 mm.
+NESTED_PAGE = page('width="200mm" height="200mm" viewBox="0 0 200 200"')
+NESTED = (
+    '<rect id="B" x="10" y="10" width="30" height="30"/>'
+    '<svg id="N" x="100" y="100" width="50" viewBox="0 0 10 10"><rect id="A" x="1" y="1" width="4" height="4"/></svg>'
+    '<svg id="M" x="0" y="150" width="40" height="20" viewBox="0 0 10 10" preserveAspectRatio="none">'
+    '<g transform="translate(1 1)"><rect id="S" width="8" height="8"/></g></svg>'
+)
+PERIMETERS = {"A": 80.0, "S": 96.0, "B": 120.0}
+
+
+def measured(err):
+    return {k: float(v) for k, v in re.findall(r"#(\w+): perimeter ([\d.]+) mm", err)}
+
+
+class NestedViewports(unittest.TestCase):
+    def test_shapes_in_nested_svg_are_measured_through_its_viewport(self):
+        # Was 16 mm for A (its own coordinates) in the extension; the CLI skipped it.
+        doc = Doc(self, NESTED_PAGE, NESTED)
+        _, err, _ = doc.run(Measure, "--id=A", "--id=S", "--id=B")
+        self.assertEqual(measured(err), PERIMETERS, err)
+        proc = dformer("measure", "--json", doc.path)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        rows = {r["id"]: r["perimeter"] for r in json.loads(proc.stdout)}
+        for eid, want in PERIMETERS.items():
+            self.assertAlmostEqual(rows[eid], want, 9, rows)
+
+    def test_selecting_the_nested_svg_opens_it_like_a_group(self):
+        doc = Doc(self, NESTED_PAGE, NESTED)
+        _, err, _ = doc.run(Measure, "--id=N")
+        self.assertEqual(measured(err), {"A": 80.0}, err)
+
+    def test_normalize_writes_back_through_the_viewport(self):
+        doc = Doc(self, NESTED_PAGE, NESTED)
+        svg, err, data = doc.run(Normalize, "--id=B", "--id=A", "--target=first")
+        self.assertEqual(err, "")
+        # Written in the nested square's own coordinates: 6 units there, 30 mm on the page.
+        self.assertAlmostEqual(svg.getElementById("A").path.bounding_box().width, 6.0, 9)
+        _, err, _ = doc.then(self, data).run(Measure, "--id=A", "--id=B")
+        self.assertEqual(measured(err), {"A": 120.0, "B": 120.0}, err)
+        out = doc.path + ".cli.svg"
+        self.addCleanup(lambda: os.path.exists(out) and os.remove(out))
+        proc = dformer("normalize", doc.path, "-o", out, "--id", "B", "--id", "A", "--target", "first")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("perimeter 120.000000 mm", proc.stderr)
+        rows = json.loads(dformer("measure", "--json", "--id", "A", out).stdout)
+        self.assertAlmostEqual(rows[0]["perimeter"], 120.0, 9)
+
+    def test_a_nested_svg_of_zero_size_is_refused_naming_the_shape(self):
+        doc = Doc(self, NESTED_PAGE, '<rect id="B" width="5" height="5"/><svg id="Z" width="0" height="10">'
+                                     '<rect id="A" width="5" height="5"/></svg>')
+        svg, err, _ = doc.run(Measure, "--id=A", "--id=B")
+        self.assertIsNone(svg)
+        self.assertIn("#A is inside the nested <svg> #Z, which has zero or negative width", err)
+        proc = dformer("measure", "--id", "A", doc.path)
+        self.assertEqual(proc.returncode, 1)
+        self.assertIn("the nested <svg> #Z, which has zero or negative width", proc.stderr)
+
 
 @unittest.skipIf(NO_INKSCAPE and not os.environ.get("DFORMER_REQUIRE_INKSCAPE"), NO_INKSCAPE or "")
 class AgreesWithInkscape(unittest.TestCase):
@@ -108,6 +168,20 @@ class AgreesWithInkscape(unittest.TestCase):
     def test_meet_and_slice_pages(self):
         self.check(WIDE, ["A", "B"])
         self.check(SLICE, ["A", "B"])
+
+    def test_nested_viewports(self):
+        doc = Doc(self, NESTED_PAGE, NESTED)
+        boxes = inkscape_boxes(doc.path)
+        for eid, want in PERIMETERS.items():
+            self.assertLess(rel(2 * (boxes[eid][2] + boxes[eid][3]), want), 1e-5, f"#{eid}: Inkscape draws {boxes[eid]}")
+        # After Normalize (extension and CLI), Inkscape draws the nested square 30 mm wide.
+        _, _, data = doc.run(Normalize, "--id=B", "--id=A", "--target=first")
+        out = doc.then(self, data).path + ".cli.svg"
+        self.addCleanup(lambda: os.path.exists(out) and os.remove(out))
+        self.assertEqual(dformer("normalize", doc.path, "-o", out, "--id", "B", "--id", "A", "--target", "first").returncode, 0)
+        for path in (doc.then(self, data).path, out):
+            box = inkscape_boxes(path)["A"]
+            self.assertLess(rel(box[2], 30.0), 1e-5, f"{path}: Inkscape draws A {box}")
 
 
 if __name__ == "__main__":
