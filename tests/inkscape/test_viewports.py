@@ -147,7 +147,7 @@ class NestedViewports(unittest.TestCase):
         self.assertIn("#A is inside the nested <svg> #Z, which has zero or negative width", err)
         proc = dformer("measure", "--id", "A", doc.path)
         self.assertEqual(proc.returncode, 1)
-        self.assertIn("the nested <svg> #Z, which has zero or negative width", proc.stderr)
+        self.assertIn("#A is inside the nested <svg> #Z, which has zero or negative width", proc.stderr)
 
 
 @unittest.skipIf(NO_INKSCAPE and not os.environ.get("DFORMER_REQUIRE_INKSCAPE"), NO_INKSCAPE or "")
