@@ -10,9 +10,11 @@ writer never ran, the document is unchanged.
 import re
 
 import inkex
+from inkex.units import CONVERSIONS
 
 from dformer_bridge import CoreError
 from dformer_pieces import describe, name_pieces, selected_shapes
+from dformer_viewport import page_px_per_user
 
 UNITS = ("mm", "cm", "in", "pt", "pc", "px")
 
@@ -44,13 +46,19 @@ class DformerEffect(inkex.EffectExtension):
             raise CoreError(f"Unit {unit!r} is not one of {', '.join(UNITS)}.")
         return unit
 
+    def px_per_user(self):
+        """CSS px per document user unit, as Inkscape draws the page (``dformer_viewport``)."""
+        if not hasattr(self, "_px_per_user"):
+            self._px_per_user = page_px_per_user(self.svg)
+        return self._px_per_user
+
     def to_user(self, value):
-        """A length in the user's unit -> document user units (through viewBox scaling)."""
-        return self.svg.viewport_to_unit(f"{value}{self.unit()}")
+        """A length in the user's unit -> document user units (through the page's scale)."""
+        return value * CONVERSIONS[self.unit()] / self.px_per_user()
 
     def from_user(self, value):
         """Document user units -> the user's unit."""
-        return self.svg.unit_to_viewport(value, self.unit())
+        return value * self.px_per_user() / CONVERSIONS[self.unit()]
 
     def fmt(self, value):
         """A length in user units written for a message, e.g. ``314.159 mm``."""
@@ -60,6 +68,7 @@ class DformerEffect(inkex.EffectExtension):
 
     def pieces(self):
         """The selected shapes (selection order), checked against ``piece_count``."""
+        self.px_per_user()  # a page that stretches unequally is refused before anything else
         shapes, refused = selected_shapes(self.svg)
         if refused:
             names = ", ".join(describe(e) for e in refused)

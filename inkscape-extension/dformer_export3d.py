@@ -6,6 +6,7 @@ reported. The document is not changed."""
 import os
 
 import inkex
+from inkex.units import CONVERSIONS
 
 from dformer_bridge import call
 from dformer_effect import DformerEffect
@@ -45,7 +46,7 @@ class Export3D(DformerEffect):
         vertices = [[c * k for c in v] for v in result["vertices"]]
         stats = result["stats"]
         volume, area = stats["volume"] * k**3, stats["area"] * k**2
-        litres = self.svg.unit_to_viewport(1.0, "cm") ** 3 * stats["volume"] / 1000.0
+        litres = (self.px_per_user() / CONVERSIONS["cm"]) ** 3 * stats["volume"] / 1000.0
         comment = f"D-former D-form of {describe(shapes[0])} and {describe(shapes[1])}, unit {unit}"
         lines = [
             f"Wrote {name}: {len(vertices)} vertices, {len(result['triangles'])} triangles, unit {unit}.",

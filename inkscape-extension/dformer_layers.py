@@ -15,6 +15,7 @@ running Connectors again on the same piece replaces its earlier group.
 import inkex
 
 from dformer_pieces import OWN_PREFIX
+from dformer_viewport import page_px_per_user
 
 LAYERS = {
     "cut": ("D-former cut", "#ff0000"),
@@ -41,7 +42,7 @@ def layer(svg, kind):
 def stroke_style(svg, kind):
     """Hairline stroke in the layer's colour, no fill."""
     _, colour = LAYERS[kind]
-    width = svg.viewport_to_unit(HAIRLINE)
+    width = inkex.units.convert_unit(HAIRLINE, "px") / page_px_per_user(svg)
     return inkex.Style({"fill": "none", "stroke": colour, "stroke-width": f"{width:.6g}"})
 
 

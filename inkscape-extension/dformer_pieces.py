@@ -2,7 +2,7 @@
 
 A <path> sends its own ``d``; <rect>, <circle> and <ellipse> become SVG's equivalent paths
 (``local_path_data``), polygons go through inkex's ``get_path()``, all at full precision;
-nested group transforms are composed from the ``transform`` attributes. The
+nested group transforms and nested ``<svg>`` viewports are composed (``dformer_viewport``). The
 path data itself is parsed by the core (``pathFromSvg``) and written by it (``pathToSvg``), so
 the extension and the ``dformer`` batch command read SVG curves identically.
 
@@ -17,6 +17,7 @@ import re
 import inkex
 
 from dformer_bridge import CoreError, call_all, run_batch
+from dformer_viewport import to_root
 
 #: inkex classes that can be D-form pieces (closed outlines). Polyline and Line are accepted
 #: so that the core can say the outline is open, rather than the extension ignoring them.
@@ -78,9 +79,10 @@ def selected_shapes(svg):
     Text, images, clones and D-former's own output are left out; the caller checks the count."""
     shapes, refused = [], []
     for elem in svg.selection.values():
-        candidates = [elem] if not isinstance(elem, inkex.Group) else list(elem.descendants())
+        opened = isinstance(elem, (inkex.Group, inkex.SvgDocumentElement))  # a nested <svg> too
+        candidates = list(elem.descendants()) if opened else [elem]
         for cand in candidates:
-            if is_own_output(cand) or isinstance(cand, inkex.Group):
+            if is_own_output(cand) or isinstance(cand, (inkex.Group, inkex.SvgDocumentElement)):
                 continue
             if isinstance(cand, SHAPES):
                 if cand not in shapes:
@@ -100,16 +102,12 @@ def check_editable(elem):
 
 
 def doc_transform(elem):
-    """Local coordinates -> document user units: the ``transform`` attributes of the element
-    and its ancestors, composed outermost first. Read from the raw attributes on purpose:
-    inkex 1.2's ``composed_transform()`` and ``get("transform")`` write every transform they
-    touch back as ``matrix(...)`` rounded to 6 significant digits, which would move the
-    pieces by ~1e-6 relative on saving and undo the exact perimeters."""
-    result = inkex.Transform()
-    chain = [elem] + [a for a in elem.ancestors() if isinstance(a, inkex.BaseElement)]
-    for node in reversed(chain):
-        result = result @ inkex.Transform(node.attrib.get("transform"))
-    return result
+    """Local coordinates -> document user units: ``transform`` attributes and nested
+    ``<svg>`` viewports, as Inkscape draws them (``dformer_viewport.to_root``)."""
+    try:
+        return to_root(elem)
+    except CoreError as err:
+        raise CoreError(f"{describe(elem)} is inside {err}") from err
 
 
 def to_doc(path, transform):

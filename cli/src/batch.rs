@@ -30,25 +30,18 @@ pub fn map_path(path: &PathDto, a: Affine) -> PathDto {
     out
 }
 
-/// The shapes to work on: those named by `ids` (in that order), or every shape in the file.
+/// The shapes to work on: those named by `ids` (in that order; only they are read), or every
+/// shape in the file.
 pub fn pick<'a, 'i>(
     file: &'a SvgFile<'i>,
     ids: &[String],
     min: usize,
     max: Option<usize>,
 ) -> Result<Vec<Shape<'a, 'i>>, String> {
-    let all = file.shapes()?;
     let chosen = if ids.is_empty() {
-        all
+        file.shapes()?
     } else {
-        ids.iter()
-            .map(|id| {
-                all.iter()
-                    .find(|s| s.node.attribute("id") == Some(id.as_str()))
-                    .cloned()
-                    .ok_or_else(|| format!("no shape with id \"{id}\" in the file"))
-            })
-            .collect::<Result<Vec<_>, _>>()?
+        file.shapes_by_id(ids)?
     };
     let n = chosen.len();
     if n < min || max.is_some_and(|m| n > m) {

@@ -9,6 +9,7 @@ mod protocol;
 mod splice;
 mod svgdoc;
 mod units;
+mod viewport;
 
 use clap::{Args, Parser, Subcommand};
 use std::io::{Read, Write};

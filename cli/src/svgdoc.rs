@@ -3,11 +3,13 @@
 //!
 //! Scope (stated in `inkscape-extension/README.md`): `path`, `rect` (with `rx`/`ry`), `circle`,
 //! `ellipse`, `polygon` (and `polyline`/`line`, which the core reports as open); `transform`
-//! attributes on the shape and every ancestor group, composed. Not followed: `<use>` clones,
-//! nested `<svg>` viewports, CSS `transform` properties, shapes in `<defs>`, masks, clips,
-//! markers, patterns and symbols, and D-former's own output layers (ids starting `dformer-`).
+//! attributes on the shape and every ancestor group, and nested `<svg>` viewports
+//! (`crate::viewport`), composed. Not followed: `<use>` clones, CSS `transform` properties,
+//! shapes in `<defs>`, masks, clips, markers, patterns and symbols, and D-former's own output
+//! layers (ids starting `dformer-`).
 
 use crate::units::{length_px, Scale};
+use crate::viewport;
 use kurbo::Affine;
 use roxmltree::{Document, Node};
 use std::fmt::Write;
@@ -32,7 +34,6 @@ const NOT_DRAWN: &[&str] = &[
     "script",
     "foreignObject",
     "use",
-    "svg",
     "image",
     "text",
 ];
@@ -160,30 +161,82 @@ impl<'input> SvgFile<'input> {
             .find(|c| c.tag_name().name() == "namedview")
             .and_then(|nv| nv.attribute((INKSCAPE_NS, "document-units")));
         let scale = Scale::new(
+            viewport::page_px_per_user(root)?,
             root.attribute("width"),
-            root.attribute("viewBox"),
             doc_units,
             unit,
         )?;
         Ok(SvgFile { doc, scale })
     }
 
-    /// Every drawable shape in document order, outside D-former's own output.
+    /// Every drawable shape in document order, outside D-former's own output, each read and
+    /// checked (the first unreadable one is the error).
     pub fn shapes(&self) -> Result<Vec<Shape<'_, 'input>>, String> {
+        self.found().into_iter().map(Found::load).collect()
+    }
+
+    /// The shapes with these ids, in this order: only they (and their ancestors) are read and
+    /// checked, so an unreadable shape elsewhere in the file does not matter.
+    pub fn shapes_by_id(&self, ids: &[String]) -> Result<Vec<Shape<'_, 'input>>, String> {
+        let found = self.found();
+        ids.iter()
+            .map(|id| {
+                found
+                    .iter()
+                    .find(|f| f.node.attribute("id") == Some(id.as_str()))
+                    .cloned()
+                    .ok_or_else(|| format!("no shape with id \"{id}\" in the file"))
+                    .and_then(Found::load)
+            })
+            .collect()
+    }
+
+    /// Every drawable shape, not yet read: errors in it or its ancestors are kept for `load`.
+    fn found(&self) -> Vec<Found<'_, 'input>> {
         let mut out = Vec::new();
         let root = self.doc.root_element();
         let mut counter = 0usize;
-        walk(root, transform_of(root)?, &mut out, &mut counter)?;
-        Ok(out)
+        // Inkscape 1.2 ignores `transform` on <svg> elements (the root's included).
+        let size = viewport::page_size(root);
+        walk(root, Ok(Affine::IDENTITY), size, &mut out, &mut counter);
+        out
+    }
+}
+
+/// A shape found in the tree; `ctm` is the error of an ancestor (a phrase naming it) if one
+/// cannot be read.
+#[derive(Clone)]
+struct Found<'a, 'input> {
+    node: Node<'a, 'input>,
+    name: String,
+    key: String,
+    ctm: Result<Affine, String>,
+}
+
+impl<'a, 'input> Found<'a, 'input> {
+    /// Reads the shape: its transform chain and its outline.
+    fn load(self) -> Result<Shape<'a, 'input>, String> {
+        let ctm = self
+            .ctm
+            .map_err(|e| format!("{} is inside {e}", self.name))?;
+        let ctm = ctm * transform_of(self.node).map_err(|e| format!("{}: {e}", self.name))?;
+        Ok(Shape {
+            node: self.node,
+            d: shape_path(self.node, &self.name)?,
+            name: self.name,
+            key: self.key,
+            ctm,
+        })
     }
 }
 
 fn walk<'a, 'input>(
     node: Node<'a, 'input>,
-    ctm: Affine,
-    out: &mut Vec<Shape<'a, 'input>>,
+    ctm: Result<Affine, String>,
+    size: (f64, f64),
+    out: &mut Vec<Found<'a, 'input>>,
     counter: &mut usize,
-) -> Result<(), String> {
+) {
     for child in node
         .children()
         .filter(|c| c.is_element() && c.tag_name().namespace() == Some(SVG_NS))
@@ -200,25 +253,38 @@ fn walk<'a, 'input>(
             Some(id) => format!("#{id}"),
             None => format!("<{tag}> number {}", *counter + 1),
         };
-        let local = ctm * transform_of(child).map_err(|e| format!("{what}: {e}"))?;
         if SHAPES.contains(&tag) {
             *counter += 1;
             let key = child
                 .attribute("id")
                 .map(str::to_string)
                 .unwrap_or_else(|| format!("shape{}", *counter));
-            out.push(Shape {
+            out.push(Found {
                 node: child,
-                d: shape_path(child, &what)?,
                 name: what,
                 key,
-                ctm: local,
+                ctm: ctm.clone(),
             });
+        } else if tag == "svg" {
+            match viewport::nested(child, size) {
+                Ok((map, inner)) => walk(child, ctm.clone().map(|m| m * map), inner, out, counter),
+                Err(e) => walk(
+                    child,
+                    Err(ctm.clone().err().unwrap_or(e)),
+                    size,
+                    out,
+                    counter,
+                ),
+            }
         } else {
-            walk(child, local, out, counter)?;
+            let local = ctm.clone().and_then(|m| {
+                transform_of(child)
+                    .map(|t| m * t)
+                    .map_err(|e| format!("{what}, whose {e}"))
+            });
+            walk(child, local, size, out, counter);
         }
     }
-    Ok(())
 }
 
 #[cfg(test)]
@@ -245,6 +311,54 @@ mod tests {
             "wanted scale then translate: (12, 2), got {p:?}"
         );
         assert_eq!(file.scale.unit, "mm");
+    }
+
+    #[test]
+    fn nested_svg_viewports_apply_and_svg_transforms_do_not_like_inkscape() {
+        // Inkscape 1.2 draws this rect 20 mm wide at x = 105 mm (--query-x/--query-width) and
+        // ignores transform on <svg> elements.
+        let text = r#"<svg xmlns="http://www.w3.org/2000/svg" width="200mm" height="200mm" viewBox="0 0 200 200" transform="scale(3)">
+            <svg x="100" y="100" width="50" viewBox="0 0 10 10" transform="scale(2)"><rect id="r" x="1" y="1" width="4" height="4"/></svg></svg>"#;
+        let file = SvgFile::parse(text, None).unwrap();
+        let shapes = file.shapes().unwrap();
+        let (a, b) = (
+            shapes[0].ctm * kurbo::Point::new(1.0, 1.0),
+            shapes[0].ctm * kurbo::Point::new(5.0, 5.0),
+        );
+        assert_eq!((a.x, b.x - a.x), (105.0, 20.0), "got {a:?} {b:?}");
+    }
+
+    #[test]
+    fn only_the_shapes_asked_for_are_read() {
+        // r1's percentage width, the bad group transform and the empty nested <svg> made
+        // `--id r2` fail; they matter only when one of their shapes is asked for.
+        let text = r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">
+            <rect id="r1" width="50%" height="10"/><rect id="r2" width="10" height="10"/>
+            <g id="g" transform="skewX(oops)"><rect id="r3" width="1" height="1"/></g>
+            <svg id="z" width="0"><rect id="r4" width="1" height="1"/></svg></svg>"#;
+        let file = SvgFile::parse(text, None).unwrap();
+        let two = file.shapes_by_id(&["r2".into()]).unwrap();
+        assert_eq!((two.len(), two[0].name.as_str()), (1, "#r2"));
+        let err = |id: &str| file.shapes_by_id(&[id.into()]).unwrap_err();
+        assert!(
+            err("r1").contains("#r1: attribute width=\"50%\""),
+            "got {}",
+            err("r1")
+        );
+        assert!(
+            err("r3").starts_with("#r3 is inside #g, whose transform="),
+            "got {}",
+            err("r3")
+        );
+        assert!(
+            err("r4").starts_with("#r4 is inside the nested <svg> #z, which has zero"),
+            "got {}",
+            err("r4")
+        );
+        assert!(
+            file.shapes().unwrap_err().contains("#r1"),
+            "without ids every shape is read"
+        );
     }
 
     #[test]

@@ -1,10 +1,11 @@
 //! Lengths and the document's scale: what one user unit (viewBox unit) measures on paper.
 //!
 //! CSS absolute units at 96 px per inch (SVG 1.1 §7.10): 1in = 96px, 1mm = 96/25.4px,
-//! 1cm = 96/2.54px, 1pt = 4/3px, 1pc = 16px. With `width="210mm" viewBox="0 0 210 297"` one
-//! user unit is 1 mm; without a viewBox one user unit is 1 px.
+//! 1cm = 96/2.54px, 1pt = 4/3px, 1pc = 16px. With `width="210mm" height="297mm"
+//! viewBox="0 0 210 297"` one user unit is 1 mm; without a viewBox one user unit is 1 px
+//! (`crate::viewport` works out the scale).
 
-use svgtypes::{Length, LengthUnit, ViewBox};
+use svgtypes::{Length, LengthUnit};
 
 /// The units a user may name, with their size in CSS px.
 pub const UNITS: &[(&str, f64)] = &[
@@ -45,31 +46,21 @@ pub fn length_px(text: &str) -> Option<f64> {
 /// The document's scale and the unit lengths are shown and entered in.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scale {
-    /// CSS px per user unit (from `width` and the viewBox width).
+    /// CSS px per user unit (`crate::viewport::page_px_per_user`).
     pub px_per_user: f64,
     /// Unit for messages and bare numbers in options (`mm`, `px`, …).
     pub unit: String,
 }
 
 impl Scale {
-    /// From the root's `width` and `viewBox`, and the display unit: `unit` if given, else
-    /// Inkscape's `inkscape:document-units`, else the unit of `width`, else px.
+    /// From the page's scale (CSS px per user unit) and the display unit: `unit` if given,
+    /// else Inkscape's `inkscape:document-units`, else the unit of the root's `width`, else px.
     pub fn new(
+        px_per_user: f64,
         width: Option<&str>,
-        view_box: Option<&str>,
         doc_units: Option<&str>,
         unit: Option<&str>,
     ) -> Result<Scale, String> {
-        let width_px = width
-            .and_then(length_px)
-            .filter(|w| *w > 0.0 && w.is_finite());
-        let vb = view_box
-            .and_then(|v| v.parse::<ViewBox>().ok())
-            .filter(|v| v.w > 0.0 && v.h > 0.0);
-        let px_per_user = match (width_px, vb) {
-            (Some(w), Some(vb)) => w / vb.w,
-            _ => 1.0,
-        };
         let width_unit = width
             .and_then(|w| w.trim().parse::<Length>().ok())
             .and_then(|l| unit_name(l.unit))
@@ -116,7 +107,7 @@ mod tests {
 
     #[test]
     fn a_mm_document_has_mm_user_units() {
-        let s = Scale::new(Some("210mm"), Some("0 0 210 297"), None, None).unwrap();
+        let s = Scale::new(96.0 / 25.4, Some("210mm"), None, None).unwrap();
         assert_eq!(s.unit, "mm");
         assert!(
             (s.to_unit(10.0) - 10.0).abs() < 1e-12,
@@ -135,7 +126,7 @@ mod tests {
 
     #[test]
     fn a_document_without_viewbox_has_px_user_units() {
-        let s = Scale::new(Some("800"), None, None, Some("mm")).unwrap();
+        let s = Scale::new(1.0, Some("800"), None, Some("mm")).unwrap();
         assert!(
             (s.to_unit(96.0) - 25.4).abs() < 1e-12,
             "wanted 96 px = 25.4 mm, got {}",
@@ -149,10 +140,10 @@ mod tests {
 
     #[test]
     fn inkscape_display_units_win_over_width_units_and_bad_units_are_named() {
-        let s = Scale::new(Some("100mm"), Some("0 0 100 100"), Some("cm"), None).unwrap();
+        let s = Scale::new(96.0 / 25.4, Some("100mm"), Some("cm"), None).unwrap();
         assert_eq!(s.unit, "cm");
         assert!((s.to_unit(10.0) - 1.0).abs() < 1e-12);
-        let e = Scale::new(None, None, None, Some("furlong")).unwrap_err();
+        let e = Scale::new(1.0, None, None, Some("furlong")).unwrap_err();
         assert!(e.contains("furlong") && e.contains("mm"), "got {e}");
         assert!(s.parse_user("5%").unwrap_err().contains("absolute unit"));
     }

@@ -112,6 +112,24 @@ class Batch(unittest.TestCase):
         self.assertEqual(len(svg.getElementById("dformer-cut-A")), 6)
         self.assertEqual(len(svg.xpath("//svg:g[@id='dformer-cut']")), 1)
 
+    def test_id_reads_only_the_chosen_shapes(self):
+        # r1's width="50%" made `dformer measure rects.svg --id r2` fail.
+        path = self.out("rects.svg")
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100">'
+                     '<rect id="r1" width="50%" height="10"/><rect id="r2" x="10" y="20" width="30" height="20"/>'
+                     '<rect id="r3" x="10" y="50" width="10" height="10"/></svg>')
+        proc = dformer("measure", "--json", path, "--id", "r2")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertAlmostEqual(json.loads(proc.stdout)[0]["perimeter"], 2 * (30 + 20), 9)
+        proc = dformer("normalize", path, "-o", self.out("n.svg"), "--id", "r2", "--id", "r3")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        with open(self.out("n.svg"), encoding="utf-8") as fh:
+            self.assertIn('<rect id="r1" width="50%" height="10"/>', fh.read())
+        proc = dformer("measure", path)  # every shape: r1 is read, and named
+        self.assertEqual(proc.returncode, 1)
+        self.assertIn('#r1: attribute width="50%"', proc.stderr)
+
     def test_errors_are_messages_with_exit_status_1_and_no_output_file(self):
         cases = [
             (["connect", os.path.join(DATA, "pieces_mm.svg")], "exactly 2 shapes"),
