@@ -182,11 +182,31 @@ fn congruent_ellipses_at_zero_offset_give_the_flat_doubly_covered_ellipse() {
     assert!(s.stats.converged && s.stats.max_strain < 1e-3, "{:?}", s.stats);
 }
 
+/// A unit circle as `n` cubic arcs (handle length 4/3·tan(θ/4)), first anchor at (1, 0),
+/// counter-clockwise. Its radius wobbles by ~ (θ/4)⁶: 2.7e-4 for 4 arcs, ~7e-8 for 16.
+fn circle_arcs(n: usize) -> Contour {
+    let th = std::f64::consts::TAU / n as f64;
+    let k = 4.0 / 3.0 * (th / 4.0).tan();
+    let knots = (0..n)
+        .map(|i| {
+            let (s, c) = (th * i as f64).sin_cos();
+            let a = Point::new(c, s);
+            Knot { anchor: a, left: Point::new(c + k * s, s - k * c), right: Point::new(c - k * s, s + k * c) }
+        })
+        .collect();
+    Contour::new(knots, 0).unwrap()
+}
+
+/// Circles glued at any offset are congruent, so the D-form is the flat doubly covered disc.
+/// The circle must be round to well below the solver's strain tolerance: a Bézier "circle"'s
+/// radius wobble makes the gluing at other than a multiple of its arc only nearly congruent, and
+/// the true D-form is then slightly inflated, not flat (6 arcs, wobble ~2e-5: a converged convex
+/// shape of volume ~3.5e-3 for the unit circle; 4 arcs: ~0.02).
 #[test]
 fn congruent_circles_give_the_same_flat_shape_at_every_offset() {
-    let c = ellipse(1.0, 1.0);
+    let c = circle_arcs(16);
     let p = perimeter(&c);
-    for f in [0.0, 0.1, 0.25, 0.37] {
+    for f in [0.0, 0.1, 0.2, 0.25, 0.37, 0.45] {
         let s = run(&c, &c, f * p, 64);
         let (v, a) = volume_area(&s);
         assert!(v.abs() < 1e-6 * a.powf(1.5), "offset {f}·perimeter: wanted volume 0, got {v}");
@@ -310,3 +330,4 @@ fn cold_solve_converges_at_every_offset_for_ellipse_with_circle_and_two_ellipses
     // The 4-arc circle wobbles by 2.7e-4 in radius, so the volume may vary a little with offset.
     assert!((hi - lo) / hi < 1e-2, "ellipse with circle: wanted one volume at every offset, got {ec_volumes:?}");
 }
+

@@ -558,10 +558,12 @@ fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Sol
     if !best.as_ref().is_some_and(|b| b.3) && steps.0 < cap {
         let patient = ladder(&samples, &levels, Patience { cap, ..PATIENT }, &mut steps)?;
         if let Some(p) = patient {
-            // Good first, then converged, then without a dent, then least strain.
+            // Good first, then without a dent (a converged but dented shape is a wrong isometric
+            // branch, further from the truth than an unconverged convex one), then converged,
+            // then least strain.
             let rank = |b: &Branch| {
                 let undented = worst_reflex(&b.0, &b.1) <= DENT_SINE;
-                (b.3, b.2, undented, -max_strain(&b.0, &bars(&samples[samples.len() - 1], &b.1)))
+                (b.3, undented, b.2, -max_strain(&b.0, &bars(&samples[samples.len() - 1], &b.1)))
             };
             if best.as_ref().is_none_or(|b| rank(&p) > rank(b)) {
                 best = Some(p);
