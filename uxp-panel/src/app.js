@@ -152,6 +152,7 @@
     if (!selection.ok) text = selection.error;
     else if (!n) text = host.kind === 'browser' ? 'Open two SVG shapes or pick a sample.' : 'No paths selected.';
     else text = n + (n === 1 ? ' path' : ' paths') + (host.kind === 'browser' ? ' loaded' : ' selected') + (selection.document ? ' · ' + selection.document : '');
+    if (selection.note) text += ' · ' + selection.note;
     if (selection.skipped && selection.skipped.length) {
       text += ' · skipped: ' + selection.skipped.map(function (s) { return s.name + ' (' + s.reason + ')'; }).join('; ');
     }

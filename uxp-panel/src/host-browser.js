@@ -46,9 +46,13 @@
     function useFiles(files) {
       var shapes = [];
       var unit = null;
+      var skipped = [];
+      var notes = [];
       files.forEach(function (file) {
         var parsed = DF.svgImport.parse(file.text, file.name);
         unit = unit || parsed.unit;
+        skipped = skipped.concat(parsed.skipped || []);
+        notes = notes.concat(parsed.notes || []);
         var base = file.name.replace(/\.svg$/i, '');
         parsed.shapes.forEach(function (s) {
           // One shape per file: the file's name says it; several: the shape's own id.
@@ -56,12 +60,13 @@
           shapes.push({ name: name, path: s.path, file: file.name });
         });
       });
-      var used = shapes.slice(0, 2);
-      state.skipped = shapes.slice(2).map(function (s) {
+      var used = layout(shapes.slice(0, 2));
+      // Everything read without error: only now replace the loaded design (a failed open keeps it).
+      state.skipped = skipped.concat(shapes.slice(2).map(function (s) {
         return { name: s.name, reason: 'only the first two shapes are used' };
-      });
-      state.note = shapes.length > 2 ? shapes.length + ' shapes found; using the first two.' : '';
-      state.shapes = layout(used);
+      }));
+      state.note = (shapes.length > 2 ? [shapes.length + ' shapes found; using the first two.'] : []).concat(notes).join(' ');
+      state.shapes = used;
       state.unit = unit || 'mm';
       state.document = files.map(function (f) { return f.name; }).join(' + ');
       emit();

@@ -100,6 +100,63 @@
     }
     return null;
   }
+  /** A path as a polygon: 16 points per Bézier segment (enough to tell inside from outside). */
+  function flatten(path) {
+    var pts = path.points;
+    var out = [];
+    var n = path.closed ? pts.length : pts.length - 1;
+    for (var i = 0; i < n; i++) {
+      var a = pts[i];
+      var b = pts[(i + 1) % pts.length];
+      var p0 = a.anchor;
+      var p1 = a.right || a.anchor;
+      var p2 = b.left || b.anchor;
+      var p3 = b.anchor;
+      for (var k = 0; k < 16; k++) {
+        var t = k / 16;
+        var u = 1 - t;
+        var w0 = u * u * u;
+        var w1 = 3 * u * u * t;
+        var w2 = 3 * u * t * t;
+        var w3 = t * t * t;
+        out.push([w0 * p0[0] + w1 * p1[0] + w2 * p2[0] + w3 * p3[0], w0 * p0[1] + w1 * p1[1] + w2 * p2[1] + w3 * p3[1]]);
+      }
+    }
+    if (!n && pts.length) out.push(pts[0].anchor);
+    return out;
+  }
+  function polygonArea(poly) {
+    var a = 0;
+    for (var i = 0; i < poly.length; i++) {
+      var p = poly[i];
+      var q = poly[(i + 1) % poly.length];
+      a += p[0] * q[1] - q[0] * p[1];
+    }
+    return Math.abs(a) / 2;
+  }
+  function insidePolygon(pt, poly) {
+    var inside = false;
+    for (var i = 0, j = poly.length - 1; i < poly.length; j = i++) {
+      var a = poly[i];
+      var b = poly[j];
+      if ((a[1] > pt[1]) !== (b[1] > pt[1]) && pt[0] < ((b[0] - a[0]) * (pt[1] - a[1])) / (b[1] - a[1]) + a[0]) inside = !inside;
+    }
+    return inside;
+  }
+  /**
+   * The sub-path of a compound path that encloses all the others (its holes), or -1 when there is
+   * none (separate outlines side by side, or overlapping ones).
+   */
+  function outerIndex(paths) {
+    var polys = paths.map(flatten);
+    var best = 0;
+    for (var i = 1; i < polys.length; i++) if (polygonArea(polys[i]) > polygonArea(polys[best])) best = i;
+    for (var k = 0; k < polys.length; k++) {
+      if (k === best) continue;
+      for (var m = 0; m < polys[k].length; m++) if (!insidePolygon(polys[k][m], polys[best])) return -1;
+    }
+    return best;
+  }
   /** Hidden with display:none (an Inkscape layer switched off, an old draft): not on the page, not read. */
   function hidden(el) {
     return el.getAttribute('display') === 'none' || /(^|;)\s*display\s*:\s*none\s*(;|$)/i.test(el.getAttribute('style') || '');
@@ -152,8 +209,11 @@
   }
 
   /**
-   * Parses SVG text → { unit, shapes: [{ name, path }] } (document points, y up), in document order.
-   * Throws an Error naming the file when it is not SVG or holds no shape.
+   * Parses SVG text → { unit, shapes: [{ name, path }], skipped: [{ name, reason }], notes: [text] }
+   * (document points, y up), in document order. A compound path (several sub-paths in one `d`) is
+   * one shape: its outer outline, its holes ignored (said in `notes`); one of separate outlines
+   * side by side has no outline to use and is skipped. Throws an Error naming the file when it is
+   * not SVG or holds no shape.
    */
   function parse(text, fileName) {
     var doc = new DOMParser().parseFromString(text, 'image/svg+xml');
@@ -162,6 +222,8 @@
     var svg = doc.documentElement;
     if (svg.localName !== 'svg') throw new Error(fileName + ' is not an SVG file (its root element is <' + svg.localName + '>).');
     var shapes = [];
+    var skipped = [];
+    var notes = [];
     var root = rootMatrix(svg, fromIllustrator(doc, svg) ? 1 : CSS_PT.px);
     (function walk(el, m) {
       for (var c = el.firstElementChild; c; c = c.nextElementSibling) {
@@ -174,17 +236,23 @@
         }
         if (!d.trim()) continue;
         var label = c.getAttribute('id') || c.getAttribute('inkscape:label') || '<' + c.localName + '>';
-        var paths = DF.core.pathFromSvg(d);
-        for (var i = 0; i < paths.length; i++) {
-          shapes.push({
-            name: paths.length > 1 ? label + ' (' + (i + 1) + '/' + paths.length + ')' : label,
-            path: DF.core.transformPath(paths[i], cm),
-          });
+        var paths = DF.core.pathFromSvg(d).map(function (p) { return DF.core.transformPath(p, cm); });
+        if (!paths.length) continue;
+        var outer = paths.length > 1 ? outerIndex(paths) : 0;
+        if (outer < 0) {
+          skipped.push({ name: label, reason: 'a compound path of ' + paths.length + ' separate outlines in ' + fileName + ': split it into separate shapes (Inkscape: Path › Break Apart; Illustrator: Object › Compound Path › Release)' });
+          continue;
         }
+        if (paths.length > 1) {
+          var holes = paths.length - 1;
+          notes.push('“' + label + '” is a compound path: its outer outline is used, ' + (holes === 1 ? 'its hole is' : 'its ' + holes + ' holes are') + ' ignored.');
+        }
+        shapes.push({ name: label, path: paths[outer] });
       }
     })(svg, root);
+    if (!shapes.length && skipped.length) throw new Error(fileName + ': no shape to use (skipped: ' + skipped.map(function (s) { return s.name + ', ' + s.reason; }).join('; ') + ').');
     if (!shapes.length) throw new Error(fileName + ' has no <path>, <rect>, <circle>, <ellipse> or <polygon> to use.');
-    return { unit: fileUnit(svg), shapes: shapes };
+    return { unit: fileUnit(svg), shapes: shapes, skipped: skipped, notes: notes };
   }
   DF.svgImport = { parse: parse, parseTransform: parseTransform, ellipseD: ellipseD };
 })(window.DF = window.DF || {});
