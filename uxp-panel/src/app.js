@@ -423,15 +423,18 @@
       showUnits();
       recompute();
     });
+    // Meshes are always written in millimetres, whatever unit the panel shows: STL has no unit and
+    // slicers read it as mm; OBJ has none either and CAD/CAM tools assume mm (the header says mm).
+    var toMm = 1 / DF.units.PER_UNIT.mm;
     $('#export-obj').addEventListener('click', function () {
-      if (mesh) host.saveText('d-form.obj', DF.view3d.toObj(mesh, 1 / DF.units.PER_UNIT[unit], unit), 'model/obj').then(report3d, showError);
+      if (mesh) host.saveText('d-form-mm.obj', DF.view3d.toObj(mesh, toMm, 'mm'), 'model/obj').then(report3d, showError);
     });
     $('#export-stl').addEventListener('click', function () {
-      if (mesh) host.saveText('d-form.stl', DF.view3d.toStl(mesh, 1 / DF.units.PER_UNIT[unit]), 'model/stl').then(report3d, showError);
+      if (mesh) host.saveText('d-form-mm.stl', DF.view3d.toStl(mesh, toMm), 'model/stl').then(report3d, showError);
     });
   }
   function report3d(r) {
-    if (r && r.message) setStatus(r.message, true);
+    if (r && r.message) setStatus(r.message + ' Mesh in millimetres.', true);
   }
 
   /** The outcome of Apply / exports: stays until the next change the user makes. */
