@@ -31,6 +31,7 @@
   var meshOffset = 0;
   var solving = false;
   var solveAgain = false;
+  var loadedSample = ''; // browser: the sample the loaded design came from ('' = opened files)
 
   /** Length fields: where each value (points) lives. */
   var LEN = {
@@ -308,14 +309,14 @@
       select.appendChild(o);
     });
     select.addEventListener('change', function () {
-      if (select.value) host.useSample(select.value).catch(showError);
+      if (select.value) openDesign(host.useSample(select.value), select.value);
+      else select.value = loadedSample; // "—" unloads nothing: the menu keeps naming what is loaded
     });
     $('#open-btn').addEventListener('click', function () { $('#open-input').click(); });
     $('#open-input').addEventListener('change', function (e) {
       var files = e.target.files;
       if (!files || !files.length) return;
-      select.value = '';
-      host.openFiles(files).catch(showError);
+      openDesign(host.openFiles(files), '');
       e.target.value = '';
     });
     $('#unit-select').addEventListener('change', function (e) { host.setUnit(e.target.value); });
@@ -323,6 +324,21 @@
     document.addEventListener('drop', function (e) {
       e.preventDefault();
       if (e.dataTransfer && e.dataTransfer.files.length) host.openFiles(e.dataTransfer.files).catch(showError);
+    });
+  }
+  /**
+   * A sample or files being opened (`opening`, the host's promise). The host replaces the design
+   * only when everything was read, so the Sample menu changes only then: on success it shows
+   * `menuValue` (the sample, or "—" for files); on failure the previous design is still loaded and
+   * the menu goes back to naming it.
+   */
+  function openDesign(opening, menuValue) {
+    return opening.then(function () {
+      loadedSample = menuValue;
+      $('#sample-select').value = menuValue;
+    }, function (e) {
+      $('#sample-select').value = loadedSample;
+      showError(e);
     });
   }
 
@@ -496,7 +512,7 @@
       // The browser app opens on the first sample, so there is something to look at right away.
       if (host.kind === 'browser' && !selection.pieces.length && DF.samples.length) {
         $('#sample-select').value = DF.samples[0].id;
-        return host.useSample(DF.samples[0].id);
+        return host.useSample(DF.samples[0].id).then(function () { loadedSample = DF.samples[0].id; });
       }
       return null;
     }).then(function () {
