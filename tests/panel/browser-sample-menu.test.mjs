@@ -1,6 +1,6 @@
 // The Sample menu says which design is loaded. A file that fails to open changes nothing: the
 // previous design stays, and so does the menu (it showed "—" while the old sample's pieces were
-// still loaded and downloaded). A file opened or dropped replaces the sample: the menu shows "—".
+// still loaded and downloaded). A file opened or dropped on the page replaces the sample: the menu shows "—".
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { measureRows, openApp, usePanelBrowser, waitReady } from './support.mjs';
@@ -43,3 +43,19 @@ for (const [name, text] of [BROKEN, OPEN_PATH]) {
     await page.close();
   });
 }
+
+test('a file dropped on the page replaces the sample: the menu shows "—"', async () => {
+  const page = await openApp(panel);
+  await loadSample(page, 'pebble-circle');
+  await page.evaluate(() => {
+    const svg = '<svg xmlns="http://www.w3.org/2000/svg" width="200mm" height="100mm" viewBox="0 0 200 100">' +
+      '<rect id="left" x="10" y="10" width="80" height="60"/><rect id="right" x="110" y="10" width="60" height="80"/></svg>';
+    const dt = new DataTransfer();
+    dt.items.add(new File([svg], 'dropped.svg', { type: 'image/svg+xml' }));
+    document.dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  });
+  await page.waitForFunction(() => /dropped\.svg/.test(document.querySelector('#selection-summary').textContent));
+  assert.deepEqual((await measureRows(page)).map((r) => r.name), ['left', 'right']);
+  assert.equal(await page.inputValue('#sample-select'), '', 'the menu no longer names a sample');
+  await page.close();
+});

@@ -323,7 +323,7 @@
     document.addEventListener('dragover', function (e) { e.preventDefault(); });
     document.addEventListener('drop', function (e) {
       e.preventDefault();
-      if (e.dataTransfer && e.dataTransfer.files.length) host.openFiles(e.dataTransfer.files).catch(showError);
+      if (e.dataTransfer && e.dataTransfer.files.length) openDesign(host.openFiles(e.dataTransfer.files), '');
     });
   }
   /**
