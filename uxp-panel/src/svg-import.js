@@ -1,6 +1,6 @@
 /* D-former panel (browser host): reads closed shapes out of an SVG file.
  * The file is parsed with DOMParser as XML (a real parser: entities, CDATA, namespaces, comments).
- * <path>, <rect>, <circle>, <ellipse> and <polygon> become SVG path data (circles/ellipses as four
+ * <path>, <rect>, <circle>, <ellipse>, <polygon> and <polyline> become SVG path data (circles/ellipses as four
  * cubic Béziers with the usual κ = 4(√2−1)/3, as Illustrator draws them), then core paths through
  * the core's `pathFromSvg`; then the element's full transform (its own and every ancestor's
  * `transform`, and the root viewBox → physical size) maps them to document points with y up. An
@@ -91,12 +91,18 @@
     if (tag === 'rect') return rectD(el);
     if (tag === 'circle') return ellipseD(num(el, 'cx'), num(el, 'cy'), num(el, 'r'), num(el, 'r'));
     if (tag === 'ellipse') return ellipseD(num(el, 'cx'), num(el, 'cy'), num(el, 'rx'), num(el, 'ry'));
-    if (tag === 'polygon') {
+    if (tag === 'polygon' || tag === 'polyline') {
       var v = (el.getAttribute('points') || '').trim().split(/[\s,]+/).map(Number);
-      if (v.length < 4) return '';
+      var n = v.length - (v.length % 2); // an odd last number is ignored, as SVG does
+      if (n < 4) return '';
+      // A polyline is closed only when it comes back to its first point (SVG draws no closing
+      // segment); that last point is then the first one again. An open one stays open: the core
+      // refuses it with its "path is open" message.
+      var closed = tag === 'polygon' || (v[n - 2] === v[0] && v[n - 1] === v[1]);
+      if (tag === 'polyline' && closed) n -= 2;
       var d = 'M ' + f(v[0]) + ' ' + f(v[1]);
-      for (var i = 2; i + 1 < v.length; i += 2) d += ' L ' + f(v[i]) + ' ' + f(v[i + 1]);
-      return d + ' Z';
+      for (var i = 2; i + 1 < n; i += 2) d += ' L ' + f(v[i]) + ' ' + f(v[i + 1]);
+      return closed ? d + ' Z' : d;
     }
     return null;
   }
@@ -251,7 +257,7 @@
       }
     })(svg, root);
     if (!shapes.length && skipped.length) throw new Error(fileName + ': no shape to use (skipped: ' + skipped.map(function (s) { return s.name + ', ' + s.reason; }).join('; ') + ').');
-    if (!shapes.length) throw new Error(fileName + ' has no <path>, <rect>, <circle>, <ellipse> or <polygon> to use.');
+    if (!shapes.length) throw new Error(fileName + ' has no <path>, <rect>, <circle>, <ellipse>, <polygon> or <polyline> to use.');
     return { unit: fileUnit(svg), shapes: shapes, skipped: skipped, notes: notes };
   }
   DF.svgImport = { parse: parse, parseTransform: parseTransform, ellipseD: ellipseD };
