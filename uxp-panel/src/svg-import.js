@@ -208,6 +208,56 @@
     }
     return [sx, 0, 0, -sy, tx, -ty];
   }
+  /** CSS px per unit: lengths on a nested <svg> are in its parent's user units (1 user unit = 1 px). */
+  var CSS_PX = { px: 1, pt: 96 / 72, pc: 16, mm: 96 / 25.4, cm: 960 / 25.4, in: 96, '': 1 };
+  /** An SVG length in user units; `ref` is what 100 % is. NaN when it cannot be read; `fallback` when absent. */
+  function userLength(text, ref, fallback) {
+    if (text === null || text === undefined || !String(text).trim() || String(text).trim() === 'auto') return fallback;
+    var m = /^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?)\s*(px|pt|pc|mm|cm|in|%)?\s*$/i.exec(text);
+    if (!m) return NaN;
+    var v = parseFloat(m[1]);
+    var u = (m[2] || '').toLowerCase();
+    return u === '%' ? (v / 100) * ref : v * CSS_PX[u];
+  }
+  /**
+   * A nested <svg>'s viewport: the matrix from its content's user units to its parent's, and the
+   * size of its viewport in its own user units (what % inside it refers to). null when it draws
+   * nothing (zero width or height). Throws (naming the element) when a length cannot be read.
+   * x, y, width, height (default 0, 0, 100 %, 100 %), viewBox and preserveAspectRatio (default
+   * xMidYMid meet), as SVG places them; the viewport's clipping is not applied.
+   */
+  function viewport(el, parent, fileName) {
+    var label = el.getAttribute('id') ? '<svg id="' + el.getAttribute('id') + '">' : 'a nested <svg>';
+    var x = userLength(el.getAttribute('x'), parent[0], 0);
+    var y = userLength(el.getAttribute('y'), parent[1], 0);
+    var w = userLength(el.getAttribute('width'), parent[0], parent[0]);
+    var h = userLength(el.getAttribute('height'), parent[1], parent[1]);
+    if (![x, y, w, h].every(isFinite)) {
+      throw new Error(fileName + ': cannot place ' + label + ' (its x, y, width or height is not a length, or is a percentage of a page that has no size).');
+    }
+    if (!(w > 0 && h > 0)) return null;
+    var vb = (el.getAttribute('viewBox') || '').trim().split(/[\s,]+/).map(Number);
+    if (!(vb.length === 4 && vb.every(isFinite) && vb[2] > 0 && vb[3] > 0)) return { m: [1, 0, 0, 1, x, y], size: [w, h] };
+    var par = /^\s*(?:defer\s+)?(none|x(Min|Mid|Max)Y(Min|Mid|Max))(?:\s+(meet|slice))?\s*$/.exec(el.getAttribute('preserveAspectRatio') || '') ||
+      [null, 'xMidYMid', 'Mid', 'Mid', 'meet'];
+    var sx = w / vb[2];
+    var sy = h / vb[3];
+    var tx = x;
+    var ty = y;
+    if (par[1] !== 'none') {
+      sx = sy = par[4] === 'slice' ? Math.max(sx, sy) : Math.min(sx, sy);
+      var k = { Min: 0, Mid: 0.5, Max: 1 };
+      tx += k[par[2]] * (w - vb[2] * sx);
+      ty += k[par[3]] * (h - vb[3] * sy);
+    }
+    return { m: [sx, 0, 0, sy, tx - vb[0] * sx, ty - vb[1] * sy], size: [vb[2], vb[3]] };
+  }
+  /** The root viewport's size in user units (its viewBox, else its width/height in px); NaN when unknown. */
+  function rootSize(svg) {
+    var vb = (svg.getAttribute('viewBox') || '').trim().split(/[\s,]+/).map(Number);
+    if (vb.length === 4 && vb[2] > 0 && vb[3] > 0) return [vb[2], vb[3]];
+    return [userLength(svg.getAttribute('width'), NaN, NaN), userLength(svg.getAttribute('height'), NaN, NaN)];
+  }
   /** The unit the file was drawn in, for display ("mm" when it does not say). */
   function fileUnit(svg) {
     var m = /(mm|cm|in|pt|pc)\s*$/i.exec(svg.getAttribute('width') || '');
@@ -231,13 +281,18 @@
     var skipped = [];
     var notes = [];
     var root = rootMatrix(svg, fromIllustrator(doc, svg) ? 1 : CSS_PT.px);
-    (function walk(el, m) {
+    (function walk(el, m, size) {
       for (var c = el.firstElementChild; c; c = c.nextElementSibling) {
         if (SKIP[c.localName] || hidden(c)) continue;
         var cm = mul(m, parseTransform(c.getAttribute('transform')));
         var d = shapeD(c);
+        if (d === null && c.localName === 'svg') {
+          var vp = viewport(c, size, fileName);
+          if (vp) walk(c, mul(cm, vp.m), vp.size);
+          continue;
+        }
         if (d === null) {
-          walk(c, cm);
+          walk(c, cm, size);
           continue;
         }
         if (!d.trim()) continue;
@@ -255,7 +310,7 @@
         }
         shapes.push({ name: label, path: paths[outer] });
       }
-    })(svg, root);
+    })(svg, root, rootSize(svg));
     if (!shapes.length && skipped.length) throw new Error(fileName + ': no shape to use (skipped: ' + skipped.map(function (s) { return s.name + ', ' + s.reason; }).join('; ') + ').');
     if (!shapes.length) throw new Error(fileName + ' has no <path>, <rect>, <circle>, <ellipse>, <polygon> or <polyline> to use.');
     return { unit: fileUnit(svg), shapes: shapes, skipped: skipped, notes: notes };
