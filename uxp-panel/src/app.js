@@ -319,7 +319,11 @@
       openDesign(host.openFiles(files), '');
       e.target.value = '';
     });
-    $('#unit-select').addEventListener('change', function (e) { host.setUnit(e.target.value); });
+    $('#unit-select').addEventListener('change', function (e) {
+      settings.unit = e.target.value; // remembered: the next files and sessions use it
+      save();
+      host.setUnit(e.target.value);
+    });
     document.addEventListener('dragover', function (e) { e.preventDefault(); });
     document.addEventListener('drop', function (e) {
       e.preventDefault();
@@ -505,6 +509,7 @@
     bind();
     bind3d();
     if (host.kind === 'browser') bindBrowser();
+    if (host.kind === 'browser' && settings.unit) host.setUnit(settings.unit);
     syncControls();
     DF.core.load().then(function () {
       return host.start({ selection: onSelection, theme: applyTheme });

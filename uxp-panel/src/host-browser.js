@@ -9,6 +9,7 @@
   function createBrowserHost(win) {
     var listener = null;
     var state = { document: 'No file', unit: 'mm', shapes: [], skipped: [], note: '' };
+    var chosenUnit = null; // set by setUnit: the user's choice wins over each file's unit
     var media = win.matchMedia ? win.matchMedia('(prefers-color-scheme: dark)') : null;
 
     function selection() {
@@ -67,7 +68,7 @@
       }));
       state.note = (shapes.length > 2 ? [shapes.length + ' shapes found; using the first two.'] : []).concat(notes).join(' ');
       state.shapes = used;
-      state.unit = unit || 'mm';
+      state.unit = chosenUnit || unit || 'mm';
       state.document = files.map(function (f) { return f.name; }).join(' + ');
       emit();
     }
@@ -118,8 +119,9 @@
         return Promise.resolve();
       },
       theme: theme,
+      /** The user's unit: used from now on, also for the next files (which otherwise bring their own). */
       setUnit: function (unit) {
-        state.unit = DF.units.known(unit);
+        state.unit = chosenUnit = DF.units.known(unit);
         emit();
       },
       /** Opens SVG files chosen by the user (File objects); rejects with a message naming the file. */
