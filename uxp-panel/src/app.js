@@ -32,6 +32,7 @@
   var solving = false;
   var solveAgain = false;
   var loadedSample = ''; // browser: the sample the loaded design came from ('' = opened files)
+  var fieldErrors = {}; // field → why the value typed there is not used (shown instead of the design's message)
 
   /** Length fields: where each value (points) lives. */
   var LEN = {
@@ -121,7 +122,9 @@
     $$('.start').forEach(function (row) {
       var s = params.start[Number(row.dataset.piece)];
       $('.start-mode', row).value = s.mode;
-      $('.start-anchor', row).value = s.anchor;
+      $('.start-anchor', row).value = s.anchor; // the number in use: a rejected entry is dropped
+      $('.start-anchor', row).classList.remove('invalid');
+      delete fieldErrors['anchor' + row.dataset.piece];
       $('.start-anchor', row).hidden = s.mode !== 'anchor';
     });
     $$('.layer-row').forEach(function (row) {
@@ -177,7 +180,8 @@
       norm.textContent = '→ ' + fmt(design.normalized.perimeter) + '  (A ×' + design.normalized.scales[0].toFixed(4) + ', B ×' + design.normalized.scales[1].toFixed(4) + ')';
     }
     var layers = settings.layers;
-    if (design && design.ok) {
+    var fieldError = Object.keys(fieldErrors).map(function (k) { return fieldErrors[k]; }).join(' ');
+    if (design && design.ok && !fieldError) {
       DF.preview.render($('#preview'), design.pieces, layers, settings.labelSize, design.pitch);
       stats.textContent = design.count + ' connectors · pitch ' + fmt(design.pitch) + ' · perimeter ' + fmt(design.perimeter);
       msg.className = 'message' + (design.warnings.length ? ' warning' : '');
@@ -186,10 +190,10 @@
       var pieces = selection.pieces.map(function (p, i) { return { key: ['A', 'B', 'C', 'D', 'E', 'F'][i] || String(i + 1), name: p.name, path: p.path }; });
       DF.preview.render($('#preview'), pieces.slice(0, 6), layers, settings.labelSize, 0);
       stats.textContent = '';
-      msg.className = 'message' + (design && !design.idle ? ' error' : '');
-      msg.textContent = errorText(design);
+      msg.className = 'message' + (fieldError || (design && !design.idle) ? ' error' : '');
+      msg.textContent = fieldError || errorText(design);
     }
-    $('#apply-btn').disabled = !(design && design.ok) || applying;
+    $('#apply-btn').disabled = !(design && design.ok) || applying || !!fieldError;
   }
 
   function recompute() {
@@ -268,9 +272,29 @@
     });
     $$('.start').forEach(function (row) {
       $('.start-mode', row).addEventListener('change', function (e) { params.start[Number(row.dataset.piece)].mode = e.target.value; changed(); });
+      var i = Number(row.dataset.piece);
       $('.start-anchor', row).addEventListener('input', function (e) {
         var v = Number(e.target.value);
-        if (v >= 1) { params.start[Number(row.dataset.piece)].anchor = Math.round(v); save(); recompute(); }
+        var ok = e.target.value !== '' && v >= 1 && v === Math.round(v);
+        e.target.classList.toggle('invalid', !ok);
+        if (ok) {
+          delete fieldErrors['anchor' + i];
+          params.start[i].anchor = v;
+          save();
+        } else {
+          var piece = selection.pieces[i];
+          var n = piece && piece.path ? piece.path.points.length : 0;
+          fieldErrors['anchor' + i] = 'Anchor # for piece ' + ['A', 'B'][i] + ' must be a whole number' + (n ? ' from 1 to ' + n + '.' : ', 1 or more.');
+        }
+        recompute();
+      });
+      // Leaving the field: it shows the number in use again.
+      $('.start-anchor', row).addEventListener('change', function (e) {
+        if (!fieldErrors['anchor' + i]) return;
+        delete fieldErrors['anchor' + i];
+        e.target.value = params.start[i].anchor;
+        e.target.classList.remove('invalid');
+        recompute();
       });
     });
     $$('.layer-row').forEach(function (row) {
@@ -338,6 +362,7 @@
    */
   function openDesign(opening, menuValue) {
     return opening.then(function () {
+      setStatus('', true); // "Downloaded …" was about the design just replaced
       loadedSample = menuValue;
       $('#sample-select').value = menuValue;
     }, function (e) {
