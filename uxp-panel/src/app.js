@@ -54,7 +54,13 @@
   }
   /** The design's error with its lengths in the current unit (the core prints points). */
   function errorText(d) {
+    if (d && d.pieceCount !== undefined && host && host.kind === 'browser') return browserCountText(d.pieceCount);
     return d && d.error ? DF.messages.humanize(d.error, fmt) : '';
+  }
+  /** The browser has no selection: it asks for a file with two shapes. */
+  function browserCountText(n) {
+    if (n === 1) return 'Only one closed shape is loaded: a D-form joins two pieces. Open an SVG file with two closed shapes, or two SVG files with one shape each.';
+    return 'Open an SVG file with two closed shapes (or two SVG files with one shape each), or pick a sample.';
   }
   function lenText(points) {
     // About 0.01 mm everywhere; one more decimal for sub-unit values in the coarse-grained units.
@@ -183,9 +189,9 @@
     var fieldError = Object.keys(fieldErrors).map(function (k) { return fieldErrors[k]; }).join(' ');
     if (design && design.ok && !fieldError) {
       DF.preview.render($('#preview'), design.pieces, layers, settings.labelSize, design.pitch);
-      stats.textContent = design.count + ' connectors · pitch ' + fmt(design.pitch) + ' · perimeter ' + fmt(design.perimeter);
+      stats.textContent = design.count + (design.count === 1 ? ' connector' : ' connectors') + ' · pitch ' + fmt(design.pitch) + ' · perimeter ' + fmt(design.perimeter);
       msg.className = 'message' + (design.warnings.length ? ' warning' : '');
-      msg.textContent = design.warnings.join(' ');
+      msg.textContent = design.warnings.map(function (w) { return DF.messages.humanize(w, fmt); }).join(' ');
     } else {
       var pieces = selection.pieces.map(function (p, i) { return { key: ['A', 'B', 'C', 'D', 'E', 'F'][i] || String(i + 1), name: p.name, path: p.path }; });
       DF.preview.render($('#preview'), pieces.slice(0, 6), layers, settings.labelSize, 0);
@@ -407,7 +413,7 @@
     }
     if (!design || !design.ok) {
       viewer.setMesh(null);
-      return set3dMessage(design && design.error ? errorText(design) : 'Select two closed paths.', false);
+      return set3dMessage(design && design.error ? errorText(design) : host.kind === 'browser' ? browserCountText(0) : 'Select two closed paths.', false);
     }
     var d = design;
     var pieces = d.pieces.map(function (p) { return p.path; });
