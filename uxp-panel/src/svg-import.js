@@ -1,13 +1,13 @@
 /* D-former panel (browser host): reads closed shapes out of an SVG file.
  * The file is parsed with DOMParser as XML (a real parser: entities, CDATA, namespaces, comments).
- * <path>, <rect>, <circle>, <ellipse>, <polygon> and <polyline> become SVG path data (circles/ellipses as four
- * cubic Béziers with the usual κ = 4(√2−1)/3, as Illustrator draws them), then core paths through
- * the core's `pathFromSvg`; then the element's full transform (its own and every ancestor's
- * `transform`, and the root viewBox → physical size) maps them to document points with y up. An
- * affine map sends Bézier control points to control points, so the mapping is exact. */
+ * <path>, <rect>, <circle>, <ellipse>, <polygon> and <polyline> become SVG path data (circles,
+ * ellipses and rounded corners as the arcs SVG defines), then core paths through the core's
+ * `pathFromSvg` (which converts arcs as it does for any path); then the element's full transform
+ * (its own and every ancestor's `transform`, nested <svg> viewports, and the root viewBox →
+ * physical size) maps them to document points with y up. An affine map sends Bézier control
+ * points to control points, so the mapping is exact. */
 (function (DF) {
   'use strict';
-  var KAPPA = (4 * (Math.SQRT2 - 1)) / 3;
   var SKIP = { defs: 1, clipPath: 1, mask: 1, symbol: 1, pattern: 1, marker: 1, metadata: 1, title: 1, desc: 1 };
   /** Points per CSS unit of SVG lengths (1 px = 1/96 in). */
   var CSS_PT = { px: 0.75, pt: 1, pc: 12, mm: 72 / 25.4, cm: 720 / 25.4, in: 72, '': 0.75 };
@@ -57,14 +57,14 @@
   function f(x) {
     return String(Math.round(x * 1e9) / 1e9);
   }
+  /**
+   * A circle's or ellipse's outline as SVG defines it: four arcs from (cx + rx, cy). The core
+   * splits each quarter arc into three Béziers (a circle's perimeter within ~2e-7 of 2πr; four
+   * quarter Béziers with κ = 4(√2−1)/3 read 1.4e-4 long); the Inkscape extension sends the same.
+   */
   function ellipseD(cx, cy, rx, ry) {
-    var kx = KAPPA * rx;
-    var ky = KAPPA * ry;
-    return ['M', f(cx + rx), f(cy),
-      'C', f(cx + rx), f(cy + ky), f(cx + kx), f(cy + ry), f(cx), f(cy + ry),
-      'C', f(cx - kx), f(cy + ry), f(cx - rx), f(cy + ky), f(cx - rx), f(cy),
-      'C', f(cx - rx), f(cy - ky), f(cx - kx), f(cy - ry), f(cx), f(cy - ry),
-      'C', f(cx + kx), f(cy - ry), f(cx + rx), f(cy - ky), f(cx + rx), f(cy), 'Z'].join(' ');
+    var arc = ['A', f(rx), f(ry), '0 0 1'].join(' ');
+    return ['M', f(cx + rx), f(cy), arc, f(cx), f(cy + ry), arc, f(cx - rx), f(cy), arc, f(cx), f(cy - ry), arc, f(cx + rx), f(cy), 'Z'].join(' ');
   }
   function rectD(el) {
     var x = num(el, 'x');
@@ -76,13 +76,11 @@
     rx = Math.min(rx, w / 2);
     ry = Math.min(ry, h / 2);
     if (!(rx > 0 && ry > 0)) return ['M', f(x), f(y), 'H', f(x + w), 'V', f(y + h), 'H', f(x), 'Z'].join(' ');
-    var kx = KAPPA * rx;
-    var ky = KAPPA * ry;
-    return ['M', f(x + rx), f(y), 'H', f(x + w - rx),
-      'C', f(x + w - rx + kx), f(y), f(x + w), f(y + ry - ky), f(x + w), f(y + ry), 'V', f(y + h - ry),
-      'C', f(x + w), f(y + h - ry + ky), f(x + w - rx + kx), f(y + h), f(x + w - rx), f(y + h), 'H', f(x + rx),
-      'C', f(x + rx - kx), f(y + h), f(x), f(y + h - ry + ky), f(x), f(y + h - ry), 'V', f(y + ry),
-      'C', f(x), f(y + ry - ky), f(x + rx - kx), f(y), f(x + rx), f(y), 'Z'].join(' ');
+    // Rounded corners are quarter arcs too, as SVG defines them (and the Inkscape extension sends).
+    var arc = ['A', f(rx), f(ry), '0 0 1'].join(' ');
+    return ['M', f(x + rx), f(y), 'H', f(x + w - rx), arc, f(x + w), f(y + ry), 'V', f(y + h - ry),
+      arc, f(x + w - rx), f(y + h), 'H', f(x + rx), arc, f(x), f(y + h - ry), 'V', f(y + ry),
+      arc, f(x + rx), f(y), 'Z'].join(' ');
   }
   /** The element's outline as SVG path data, or null when it is not a shape we read. */
   function shapeD(el) {
