@@ -77,3 +77,24 @@ export async function waitReady(page, what = 'ready') {
 export function wasmBuilt() {
   return existsSync(join(panelDir, 'wasm', 'dformer.js'));
 }
+
+/** A new page of the browser app (downloads allowed), core loaded; `options` go to newPage. */
+export async function openApp(panel, options = {}) {
+  const page = await panel.browser.newPage({ viewport: { width: 1100, height: 720 }, acceptDownloads: true, ...options });
+  await page.goto(panel.url);
+  await waitReady(page, 'load');
+  return page;
+}
+
+/** Opens SVG texts ([[name, text], …]) with *Open SVG…*; waits until the summary or the status names the first. */
+export async function openSvgFiles(page, files) {
+  await page.setInputFiles('#open-input', files.map(([name, text]) => ({ name, mimeType: 'image/svg+xml', buffer: Buffer.from(text) })));
+  await page.waitForFunction((n) => (document.querySelector('#selection-summary').textContent + document.querySelector('#status').textContent).includes(n), files[0][0]);
+}
+
+/** The measure table: [{ key, name, perimeter }] (perimeter as shown, e.g. "320.00 mm"). */
+export function measureRows(page) {
+  return page.$$eval('#measure-table tr:not(.diff)', (trs) => trs.map((tr) => ({
+    key: tr.children[0].textContent, name: tr.children[1].textContent, perimeter: tr.children[2].textContent,
+  })));
+}

@@ -31,6 +31,8 @@
   var meshOffset = 0;
   var solving = false;
   var solveAgain = false;
+  var loadedSample = ''; // browser: the sample the loaded design came from ('' = opened files)
+  var fieldErrors = {}; // field → why the value typed there is not used (shown instead of the design's message)
 
   /** Length fields: where each value (points) lives. */
   var LEN = {
@@ -52,7 +54,13 @@
   }
   /** The design's error with its lengths in the current unit (the core prints points). */
   function errorText(d) {
+    if (d && d.pieceCount !== undefined && host && host.kind === 'browser') return browserCountText(d.pieceCount);
     return d && d.error ? DF.messages.humanize(d.error, fmt) : '';
+  }
+  /** The browser has no selection: it asks for a file with two shapes. */
+  function browserCountText(n) {
+    if (n === 1) return 'Only one closed shape is loaded: a D-form joins two pieces. Open an SVG file with two closed shapes, or two SVG files with one shape each.';
+    return 'Open an SVG file with two closed shapes (or two SVG files with one shape each), or pick a sample.';
   }
   function lenText(points) {
     // About 0.01 mm everywhere; one more decimal for sub-unit values in the coarse-grained units.
@@ -120,7 +128,9 @@
     $$('.start').forEach(function (row) {
       var s = params.start[Number(row.dataset.piece)];
       $('.start-mode', row).value = s.mode;
-      $('.start-anchor', row).value = s.anchor;
+      $('.start-anchor', row).value = s.anchor; // the number in use: a rejected entry is dropped
+      $('.start-anchor', row).classList.remove('invalid');
+      delete fieldErrors['anchor' + row.dataset.piece];
       $('.start-anchor', row).hidden = s.mode !== 'anchor';
     });
     $$('.layer-row').forEach(function (row) {
@@ -152,6 +162,7 @@
     if (!selection.ok) text = selection.error;
     else if (!n) text = host.kind === 'browser' ? 'Open two SVG shapes or pick a sample.' : 'No paths selected.';
     else text = n + (n === 1 ? ' path' : ' paths') + (host.kind === 'browser' ? ' loaded' : ' selected') + (selection.document ? ' · ' + selection.document : '');
+    if (selection.note) text += ' · ' + selection.note;
     if (selection.skipped && selection.skipped.length) {
       text += ' · skipped: ' + selection.skipped.map(function (s) { return s.name + ' (' + s.reason + ')'; }).join('; ');
     }
@@ -175,19 +186,20 @@
       norm.textContent = '→ ' + fmt(design.normalized.perimeter) + '  (A ×' + design.normalized.scales[0].toFixed(4) + ', B ×' + design.normalized.scales[1].toFixed(4) + ')';
     }
     var layers = settings.layers;
-    if (design && design.ok) {
+    var fieldError = Object.keys(fieldErrors).map(function (k) { return fieldErrors[k]; }).join(' ');
+    if (design && design.ok && !fieldError) {
       DF.preview.render($('#preview'), design.pieces, layers, settings.labelSize, design.pitch);
-      stats.textContent = design.count + ' connectors · pitch ' + fmt(design.pitch) + ' · perimeter ' + fmt(design.perimeter);
+      stats.textContent = design.count + (design.count === 1 ? ' connector' : ' connectors') + ' · pitch ' + fmt(design.pitch) + ' · perimeter ' + fmt(design.perimeter);
       msg.className = 'message' + (design.warnings.length ? ' warning' : '');
-      msg.textContent = design.warnings.join(' ');
+      msg.textContent = design.warnings.map(function (w) { return DF.messages.humanize(w, fmt); }).join(' ');
     } else {
       var pieces = selection.pieces.map(function (p, i) { return { key: ['A', 'B', 'C', 'D', 'E', 'F'][i] || String(i + 1), name: p.name, path: p.path }; });
       DF.preview.render($('#preview'), pieces.slice(0, 6), layers, settings.labelSize, 0);
       stats.textContent = '';
-      msg.className = 'message' + (design && !design.idle ? ' error' : '');
-      msg.textContent = errorText(design);
+      msg.className = 'message' + (fieldError || (design && !design.idle) ? ' error' : '');
+      msg.textContent = fieldError || errorText(design);
     }
-    $('#apply-btn').disabled = !(design && design.ok) || applying;
+    $('#apply-btn').disabled = !(design && design.ok) || applying || !!fieldError;
   }
 
   function recompute() {
@@ -266,9 +278,29 @@
     });
     $$('.start').forEach(function (row) {
       $('.start-mode', row).addEventListener('change', function (e) { params.start[Number(row.dataset.piece)].mode = e.target.value; changed(); });
+      var i = Number(row.dataset.piece);
       $('.start-anchor', row).addEventListener('input', function (e) {
         var v = Number(e.target.value);
-        if (v >= 1) { params.start[Number(row.dataset.piece)].anchor = Math.round(v); save(); recompute(); }
+        var ok = e.target.value !== '' && v >= 1 && v === Math.round(v);
+        e.target.classList.toggle('invalid', !ok);
+        if (ok) {
+          delete fieldErrors['anchor' + i];
+          params.start[i].anchor = v;
+          save();
+        } else {
+          var piece = selection.pieces[i];
+          var n = piece && piece.path ? piece.path.points.length : 0;
+          fieldErrors['anchor' + i] = 'Anchor # for piece ' + ['A', 'B'][i] + ' must be a whole number' + (n ? ' from 1 to ' + n + '.' : ', 1 or more.');
+        }
+        recompute();
+      });
+      // Leaving the field: it shows the number in use again.
+      $('.start-anchor', row).addEventListener('change', function (e) {
+        if (!fieldErrors['anchor' + i]) return;
+        delete fieldErrors['anchor' + i];
+        e.target.value = params.start[i].anchor;
+        e.target.classList.remove('invalid');
+        recompute();
       });
     });
     $$('.layer-row').forEach(function (row) {
@@ -307,21 +339,41 @@
       select.appendChild(o);
     });
     select.addEventListener('change', function () {
-      if (select.value) host.useSample(select.value).catch(showError);
+      if (select.value) openDesign(host.useSample(select.value), select.value);
+      else select.value = loadedSample; // "—" unloads nothing: the menu keeps naming what is loaded
     });
     $('#open-btn').addEventListener('click', function () { $('#open-input').click(); });
     $('#open-input').addEventListener('change', function (e) {
       var files = e.target.files;
       if (!files || !files.length) return;
-      select.value = '';
-      host.openFiles(files).catch(showError);
+      openDesign(host.openFiles(files), '');
       e.target.value = '';
     });
-    $('#unit-select').addEventListener('change', function (e) { host.setUnit(e.target.value); });
+    $('#unit-select').addEventListener('change', function (e) {
+      settings.unit = e.target.value; // remembered: the next files and sessions use it
+      save();
+      host.setUnit(e.target.value);
+    });
     document.addEventListener('dragover', function (e) { e.preventDefault(); });
     document.addEventListener('drop', function (e) {
       e.preventDefault();
-      if (e.dataTransfer && e.dataTransfer.files.length) host.openFiles(e.dataTransfer.files).catch(showError);
+      if (e.dataTransfer && e.dataTransfer.files.length) openDesign(host.openFiles(e.dataTransfer.files), '');
+    });
+  }
+  /**
+   * A sample or files being opened (`opening`, the host's promise). The host replaces the design
+   * only when everything was read, so the Sample menu changes only then: on success it shows
+   * `menuValue` (the sample, or "—" for files); on failure the previous design is still loaded and
+   * the menu goes back to naming it.
+   */
+  function openDesign(opening, menuValue) {
+    return opening.then(function () {
+      setStatus('', true); // "Downloaded …" was about the design just replaced
+      loadedSample = menuValue;
+      $('#sample-select').value = menuValue;
+    }, function (e) {
+      $('#sample-select').value = loadedSample;
+      showError(e);
     });
   }
 
@@ -361,7 +413,7 @@
     }
     if (!design || !design.ok) {
       viewer.setMesh(null);
-      return set3dMessage(design && design.error ? errorText(design) : 'Select two closed paths.', false);
+      return set3dMessage(design && design.error ? errorText(design) : host.kind === 'browser' ? browserCountText(0) : 'Select two closed paths.', false);
     }
     var d = design;
     var pieces = d.pieces.map(function (p) { return p.path; });
@@ -422,15 +474,18 @@
       showUnits();
       recompute();
     });
+    // Meshes are always written in millimetres, whatever unit the panel shows: STL has no unit and
+    // slicers read it as mm; OBJ has none either and CAD/CAM tools assume mm (the header says mm).
+    var toMm = 1 / DF.units.PER_UNIT.mm;
     $('#export-obj').addEventListener('click', function () {
-      if (mesh) host.saveText('d-form.obj', DF.view3d.toObj(mesh, 1 / DF.units.PER_UNIT[unit], unit), 'model/obj').then(report3d, showError);
+      if (mesh) host.saveText('d-form-mm.obj', DF.view3d.toObj(mesh, toMm, 'mm'), 'model/obj').then(report3d, showError);
     });
     $('#export-stl').addEventListener('click', function () {
-      if (mesh) host.saveText('d-form.stl', DF.view3d.toStl(mesh, 1 / DF.units.PER_UNIT[unit]), 'model/stl').then(report3d, showError);
+      if (mesh) host.saveText('d-form-mm.stl', DF.view3d.toStl(mesh, toMm), 'model/stl').then(report3d, showError);
     });
   }
   function report3d(r) {
-    if (r && r.message) setStatus(r.message, true);
+    if (r && r.message) setStatus(r.message + ' Mesh in millimetres.', true);
   }
 
   /** The outcome of Apply / exports: stays until the next change the user makes. */
@@ -485,6 +540,7 @@
     bind();
     bind3d();
     if (host.kind === 'browser') bindBrowser();
+    if (host.kind === 'browser' && settings.unit) host.setUnit(settings.unit);
     syncControls();
     DF.core.load().then(function () {
       return host.start({ selection: onSelection, theme: applyTheme });
@@ -492,7 +548,7 @@
       // The browser app opens on the first sample, so there is something to look at right away.
       if (host.kind === 'browser' && !selection.pieces.length && DF.samples.length) {
         $('#sample-select').value = DF.samples[0].id;
-        return host.useSample(DF.samples[0].id);
+        return host.useSample(DF.samples[0].id).then(function () { loadedSample = DF.samples[0].id; });
       }
       return null;
     }).then(function () {

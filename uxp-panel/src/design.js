@@ -67,14 +67,11 @@
   function compute(selection, params) {
     var pieces = selection.pieces || [];
     var out = { ok: false, measures: measureAll(pieces), warnings: [] };
-    if (!pieces.length) {
-      out.error = 'Select two closed paths.';
-      out.idle = true;
-      return out;
-    }
     if (pieces.length !== 2) {
-      out.error = pieces.length === 1 ? 'Select a second closed path: a D-form joins two pieces.' : pieces.length + ' paths are selected; select exactly two.';
-      out.idle = pieces.length === 1;
+      // Illustrator's wording; `pieceCount` lets a host with no selection say it its own way.
+      out.pieceCount = pieces.length;
+      out.error = !pieces.length ? 'Select two closed paths.' : pieces.length === 1 ? 'Select a second closed path: a D-form joins two pieces.' : pieces.length + ' paths are selected; select exactly two.';
+      out.idle = pieces.length <= 1;
       return out;
     }
     try {

@@ -9,6 +9,7 @@
   function createBrowserHost(win) {
     var listener = null;
     var state = { document: 'No file', unit: 'mm', shapes: [], skipped: [], note: '' };
+    var chosenUnit = null; // set by setUnit: the user's choice wins over each file's unit
     var media = win.matchMedia ? win.matchMedia('(prefers-color-scheme: dark)') : null;
 
     function selection() {
@@ -46,9 +47,13 @@
     function useFiles(files) {
       var shapes = [];
       var unit = null;
+      var skipped = [];
+      var notes = [];
       files.forEach(function (file) {
         var parsed = DF.svgImport.parse(file.text, file.name);
         unit = unit || parsed.unit;
+        skipped = skipped.concat(parsed.skipped || []);
+        notes = notes.concat(parsed.notes || []);
         var base = file.name.replace(/\.svg$/i, '');
         parsed.shapes.forEach(function (s) {
           // One shape per file: the file's name says it; several: the shape's own id.
@@ -56,13 +61,14 @@
           shapes.push({ name: name, path: s.path, file: file.name });
         });
       });
-      var used = shapes.slice(0, 2);
-      state.skipped = shapes.slice(2).map(function (s) {
+      var used = layout(shapes.slice(0, 2));
+      // Everything read without error: only now replace the loaded design (a failed open keeps it).
+      state.skipped = skipped.concat(shapes.slice(2).map(function (s) {
         return { name: s.name, reason: 'only the first two shapes are used' };
-      });
-      state.note = shapes.length > 2 ? shapes.length + ' shapes found; using the first two.' : '';
-      state.shapes = layout(used);
-      state.unit = unit || 'mm';
+      }));
+      state.note = (shapes.length > 2 ? [shapes.length + ' shapes found; using the first two.'] : []).concat(notes).join(' ');
+      state.shapes = used;
+      state.unit = chosenUnit || unit || 'mm';
       state.document = files.map(function (f) { return f.name; }).join(' + ');
       emit();
     }
@@ -113,8 +119,9 @@
         return Promise.resolve();
       },
       theme: theme,
+      /** The user's unit: used from now on, also for the next files (which otherwise bring their own). */
       setUnit: function (unit) {
-        state.unit = DF.units.known(unit);
+        state.unit = chosenUnit = DF.units.known(unit);
         emit();
       },
       /** Opens SVG files chosen by the user (File objects); rejects with a message naming the file. */

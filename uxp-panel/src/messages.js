@@ -52,6 +52,17 @@
     text = text.replace(new RegExp('Option `(\\w+)`: must be a positive(?:, finite perimeter| number), got ' + NUM), function (m, name, v) {
       return (LABELS[name] || name) + ' must be more than 0 (it is ' + format(Number(v)) + ').';
     });
+    // The core calls the pieces "first"/"second"; the panel shows them as A and B.
+    var KEY = { first: 'A', second: 'B' };
+    // A path measured alone is "the first path" to the core; prefixed with its name it is "the path".
+    text = text.replace(/(”: )The first path /g, '$1The path ');
+    text = text.replace(/\b(On t|t|T)he (first|second) (piece|path)\b/g, function (m, the, which, what) {
+      if (what === 'piece') return (the === 'T' ? 'Piece ' : the === 'On t' ? 'On piece ' : 'piece ') + KEY[which];
+      return (the === 'On t' ? 'On the' : the === 'T' ? 'The' : 'the') + ' path of piece ' + KEY[which];
+    });
+    // One connector is singular ("the holes of connector 3 cross the edge", "gives 1 connector").
+    text = text.replace(/\bconnectors (\d+)(?= (?:cross|lie|run|overlap)\b)/g, 'connector $1');
+    text = text.replace(/\b1 connectors\b/g, '1 connector');
     return text;
   }
   DF.messages = { humanize: humanize };

@@ -1,5 +1,6 @@
 /* D-former panel: settings remembered between sessions (localStorage; CEP keeps it per extension).
- * Layer colours/widths and the last design parameters. Lengths are stored in points. */
+ * Layer colours/widths, the last design parameters and the unit the user chose. Lengths are stored
+ * in points. */
 (function (DF) {
   'use strict';
   var KEY = 'dformer.settings.v1';
@@ -12,6 +13,7 @@
     },
     labelSize: 6,
     params: null,
+    unit: null, // the unit the user chose (browser app); null: each file's own unit
   };
 
   function clone(x) {
@@ -30,6 +32,7 @@
         });
         if (typeof saved.labelSize === 'number' && saved.labelSize > 0) s.labelSize = saved.labelSize;
         if (saved.params && typeof saved.params === 'object') s.params = saved.params;
+        if (/^(mm|cm|in|pt|px|pc)$/.test(saved.unit)) s.unit = saved.unit;
       }
     } catch (unreadable) {
       void unreadable; // unreadable storage: defaults

@@ -1,13 +1,13 @@
 /* D-former panel (browser host): reads closed shapes out of an SVG file.
  * The file is parsed with DOMParser as XML (a real parser: entities, CDATA, namespaces, comments).
- * <path>, <rect>, <circle>, <ellipse> and <polygon> become SVG path data (circles/ellipses as four
- * cubic Béziers with the usual κ = 4(√2−1)/3, as Illustrator draws them), then core paths through
- * the core's `pathFromSvg`; then the element's full transform (its own and every ancestor's
- * `transform`, and the root viewBox → physical size) maps them to document points with y up. An
- * affine map sends Bézier control points to control points, so the mapping is exact. */
+ * <path>, <rect>, <circle>, <ellipse>, <polygon> and <polyline> become SVG path data (circles,
+ * ellipses and rounded corners as the arcs SVG defines), then core paths through the core's
+ * `pathFromSvg` (which converts arcs as it does for any path); then the element's full transform
+ * (its own and every ancestor's `transform`, nested <svg> viewports, and the root viewBox →
+ * physical size) maps them to document points with y up. An affine map sends Bézier control
+ * points to control points, so the mapping is exact. */
 (function (DF) {
   'use strict';
-  var KAPPA = (4 * (Math.SQRT2 - 1)) / 3;
   var SKIP = { defs: 1, clipPath: 1, mask: 1, symbol: 1, pattern: 1, marker: 1, metadata: 1, title: 1, desc: 1 };
   /** Points per CSS unit of SVG lengths (1 px = 1/96 in). */
   var CSS_PT = { px: 0.75, pt: 1, pc: 12, mm: 72 / 25.4, cm: 720 / 25.4, in: 72, '': 0.75 };
@@ -57,14 +57,14 @@
   function f(x) {
     return String(Math.round(x * 1e9) / 1e9);
   }
+  /**
+   * A circle's or ellipse's outline as SVG defines it: four arcs from (cx + rx, cy). The core
+   * splits each quarter arc into three Béziers (a circle's perimeter within ~2e-7 of 2πr; four
+   * quarter Béziers with κ = 4(√2−1)/3 read 1.4e-4 long); the Inkscape extension sends the same.
+   */
   function ellipseD(cx, cy, rx, ry) {
-    var kx = KAPPA * rx;
-    var ky = KAPPA * ry;
-    return ['M', f(cx + rx), f(cy),
-      'C', f(cx + rx), f(cy + ky), f(cx + kx), f(cy + ry), f(cx), f(cy + ry),
-      'C', f(cx - kx), f(cy + ry), f(cx - rx), f(cy + ky), f(cx - rx), f(cy),
-      'C', f(cx - rx), f(cy - ky), f(cx - kx), f(cy - ry), f(cx), f(cy - ry),
-      'C', f(cx + kx), f(cy - ry), f(cx + rx), f(cy - ky), f(cx + rx), f(cy), 'Z'].join(' ');
+    var arc = ['A', f(rx), f(ry), '0 0 1'].join(' ');
+    return ['M', f(cx + rx), f(cy), arc, f(cx), f(cy + ry), arc, f(cx - rx), f(cy), arc, f(cx), f(cy - ry), arc, f(cx + rx), f(cy), 'Z'].join(' ');
   }
   function rectD(el) {
     var x = num(el, 'x');
@@ -76,13 +76,11 @@
     rx = Math.min(rx, w / 2);
     ry = Math.min(ry, h / 2);
     if (!(rx > 0 && ry > 0)) return ['M', f(x), f(y), 'H', f(x + w), 'V', f(y + h), 'H', f(x), 'Z'].join(' ');
-    var kx = KAPPA * rx;
-    var ky = KAPPA * ry;
-    return ['M', f(x + rx), f(y), 'H', f(x + w - rx),
-      'C', f(x + w - rx + kx), f(y), f(x + w), f(y + ry - ky), f(x + w), f(y + ry), 'V', f(y + h - ry),
-      'C', f(x + w), f(y + h - ry + ky), f(x + w - rx + kx), f(y + h), f(x + w - rx), f(y + h), 'H', f(x + rx),
-      'C', f(x + rx - kx), f(y + h), f(x), f(y + h - ry + ky), f(x), f(y + h - ry), 'V', f(y + ry),
-      'C', f(x), f(y + ry - ky), f(x + rx - kx), f(y), f(x + rx), f(y), 'Z'].join(' ');
+    // Rounded corners are quarter arcs too, as SVG defines them (and the Inkscape extension sends).
+    var arc = ['A', f(rx), f(ry), '0 0 1'].join(' ');
+    return ['M', f(x + rx), f(y), 'H', f(x + w - rx), arc, f(x + w), f(y + ry), 'V', f(y + h - ry),
+      arc, f(x + w - rx), f(y + h), 'H', f(x + rx), arc, f(x), f(y + h - ry), 'V', f(y + ry),
+      arc, f(x + rx), f(y), 'Z'].join(' ');
   }
   /** The element's outline as SVG path data, or null when it is not a shape we read. */
   function shapeD(el) {
@@ -91,14 +89,77 @@
     if (tag === 'rect') return rectD(el);
     if (tag === 'circle') return ellipseD(num(el, 'cx'), num(el, 'cy'), num(el, 'r'), num(el, 'r'));
     if (tag === 'ellipse') return ellipseD(num(el, 'cx'), num(el, 'cy'), num(el, 'rx'), num(el, 'ry'));
-    if (tag === 'polygon') {
+    if (tag === 'polygon' || tag === 'polyline') {
       var v = (el.getAttribute('points') || '').trim().split(/[\s,]+/).map(Number);
-      if (v.length < 4) return '';
+      var n = v.length - (v.length % 2); // an odd last number is ignored, as SVG does
+      if (n < 4) return '';
+      // A polyline is closed only when it comes back to its first point (SVG draws no closing
+      // segment); that last point is then the first one again. An open one stays open: the core
+      // refuses it with its "path is open" message.
+      var closed = tag === 'polygon' || (v[n - 2] === v[0] && v[n - 1] === v[1]);
+      if (tag === 'polyline' && closed) n -= 2;
       var d = 'M ' + f(v[0]) + ' ' + f(v[1]);
-      for (var i = 2; i + 1 < v.length; i += 2) d += ' L ' + f(v[i]) + ' ' + f(v[i + 1]);
-      return d + ' Z';
+      for (var i = 2; i + 1 < n; i += 2) d += ' L ' + f(v[i]) + ' ' + f(v[i + 1]);
+      return closed ? d + ' Z' : d;
     }
     return null;
+  }
+  /** A path as a polygon: 16 points per Bézier segment (enough to tell inside from outside). */
+  function flatten(path) {
+    var pts = path.points;
+    var out = [];
+    var n = path.closed ? pts.length : pts.length - 1;
+    for (var i = 0; i < n; i++) {
+      var a = pts[i];
+      var b = pts[(i + 1) % pts.length];
+      var p0 = a.anchor;
+      var p1 = a.right || a.anchor;
+      var p2 = b.left || b.anchor;
+      var p3 = b.anchor;
+      for (var k = 0; k < 16; k++) {
+        var t = k / 16;
+        var u = 1 - t;
+        var w0 = u * u * u;
+        var w1 = 3 * u * u * t;
+        var w2 = 3 * u * t * t;
+        var w3 = t * t * t;
+        out.push([w0 * p0[0] + w1 * p1[0] + w2 * p2[0] + w3 * p3[0], w0 * p0[1] + w1 * p1[1] + w2 * p2[1] + w3 * p3[1]]);
+      }
+    }
+    if (!n && pts.length) out.push(pts[0].anchor);
+    return out;
+  }
+  function polygonArea(poly) {
+    var a = 0;
+    for (var i = 0; i < poly.length; i++) {
+      var p = poly[i];
+      var q = poly[(i + 1) % poly.length];
+      a += p[0] * q[1] - q[0] * p[1];
+    }
+    return Math.abs(a) / 2;
+  }
+  function insidePolygon(pt, poly) {
+    var inside = false;
+    for (var i = 0, j = poly.length - 1; i < poly.length; j = i++) {
+      var a = poly[i];
+      var b = poly[j];
+      if ((a[1] > pt[1]) !== (b[1] > pt[1]) && pt[0] < ((b[0] - a[0]) * (pt[1] - a[1])) / (b[1] - a[1]) + a[0]) inside = !inside;
+    }
+    return inside;
+  }
+  /**
+   * The sub-path of a compound path that encloses all the others (its holes), or -1 when there is
+   * none (separate outlines side by side, or overlapping ones).
+   */
+  function outerIndex(paths) {
+    var polys = paths.map(flatten);
+    var best = 0;
+    for (var i = 1; i < polys.length; i++) if (polygonArea(polys[i]) > polygonArea(polys[best])) best = i;
+    for (var k = 0; k < polys.length; k++) {
+      if (k === best) continue;
+      for (var m = 0; m < polys[k].length; m++) if (!insidePolygon(polys[k][m], polys[best])) return -1;
+    }
+    return best;
   }
   /** Hidden with display:none (an Inkscape layer switched off, an old draft): not on the page, not read. */
   function hidden(el) {
@@ -145,6 +206,56 @@
     }
     return [sx, 0, 0, -sy, tx, -ty];
   }
+  /** CSS px per unit: lengths on a nested <svg> are in its parent's user units (1 user unit = 1 px). */
+  var CSS_PX = { px: 1, pt: 96 / 72, pc: 16, mm: 96 / 25.4, cm: 960 / 25.4, in: 96, '': 1 };
+  /** An SVG length in user units; `ref` is what 100 % is. NaN when it cannot be read; `fallback` when absent. */
+  function userLength(text, ref, fallback) {
+    if (text === null || text === undefined || !String(text).trim() || String(text).trim() === 'auto') return fallback;
+    var m = /^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?)\s*(px|pt|pc|mm|cm|in|%)?\s*$/i.exec(text);
+    if (!m) return NaN;
+    var v = parseFloat(m[1]);
+    var u = (m[2] || '').toLowerCase();
+    return u === '%' ? (v / 100) * ref : v * CSS_PX[u];
+  }
+  /**
+   * A nested <svg>'s viewport: the matrix from its content's user units to its parent's, and the
+   * size of its viewport in its own user units (what % inside it refers to). null when it draws
+   * nothing (zero width or height). Throws (naming the element) when a length cannot be read.
+   * x, y, width, height (default 0, 0, 100 %, 100 %), viewBox and preserveAspectRatio (default
+   * xMidYMid meet), as SVG places them; the viewport's clipping is not applied.
+   */
+  function viewport(el, parent, fileName) {
+    var label = el.getAttribute('id') ? '<svg id="' + el.getAttribute('id') + '">' : 'a nested <svg>';
+    var x = userLength(el.getAttribute('x'), parent[0], 0);
+    var y = userLength(el.getAttribute('y'), parent[1], 0);
+    var w = userLength(el.getAttribute('width'), parent[0], parent[0]);
+    var h = userLength(el.getAttribute('height'), parent[1], parent[1]);
+    if (![x, y, w, h].every(isFinite)) {
+      throw new Error(fileName + ': cannot place ' + label + ' (its x, y, width or height is not a length, or is a percentage of a page that has no size).');
+    }
+    if (!(w > 0 && h > 0)) return null;
+    var vb = (el.getAttribute('viewBox') || '').trim().split(/[\s,]+/).map(Number);
+    if (!(vb.length === 4 && vb.every(isFinite) && vb[2] > 0 && vb[3] > 0)) return { m: [1, 0, 0, 1, x, y], size: [w, h] };
+    var par = /^\s*(?:defer\s+)?(none|x(Min|Mid|Max)Y(Min|Mid|Max))(?:\s+(meet|slice))?\s*$/.exec(el.getAttribute('preserveAspectRatio') || '') ||
+      [null, 'xMidYMid', 'Mid', 'Mid', 'meet'];
+    var sx = w / vb[2];
+    var sy = h / vb[3];
+    var tx = x;
+    var ty = y;
+    if (par[1] !== 'none') {
+      sx = sy = par[4] === 'slice' ? Math.max(sx, sy) : Math.min(sx, sy);
+      var k = { Min: 0, Mid: 0.5, Max: 1 };
+      tx += k[par[2]] * (w - vb[2] * sx);
+      ty += k[par[3]] * (h - vb[3] * sy);
+    }
+    return { m: [sx, 0, 0, sy, tx - vb[0] * sx, ty - vb[1] * sy], size: [vb[2], vb[3]] };
+  }
+  /** The root viewport's size in user units (its viewBox, else its width/height in px); NaN when unknown. */
+  function rootSize(svg) {
+    var vb = (svg.getAttribute('viewBox') || '').trim().split(/[\s,]+/).map(Number);
+    if (vb.length === 4 && vb[2] > 0 && vb[3] > 0) return [vb[2], vb[3]];
+    return [userLength(svg.getAttribute('width'), NaN, NaN), userLength(svg.getAttribute('height'), NaN, NaN)];
+  }
   /** The unit the file was drawn in, for display ("mm" when it does not say). */
   function fileUnit(svg) {
     var m = /(mm|cm|in|pt|pc)\s*$/i.exec(svg.getAttribute('width') || '');
@@ -152,8 +263,11 @@
   }
 
   /**
-   * Parses SVG text → { unit, shapes: [{ name, path }] } (document points, y up), in document order.
-   * Throws an Error naming the file when it is not SVG or holds no shape.
+   * Parses SVG text → { unit, shapes: [{ name, path }], skipped: [{ name, reason }], notes: [text] }
+   * (document points, y up), in document order. A compound path (several sub-paths in one `d`) is
+   * one shape: its outer outline, its holes ignored (said in `notes`); one of separate outlines
+   * side by side has no outline to use and is skipped. Throws an Error naming the file when it is
+   * not SVG or holds no shape.
    */
   function parse(text, fileName) {
     var doc = new DOMParser().parseFromString(text, 'image/svg+xml');
@@ -162,29 +276,42 @@
     var svg = doc.documentElement;
     if (svg.localName !== 'svg') throw new Error(fileName + ' is not an SVG file (its root element is <' + svg.localName + '>).');
     var shapes = [];
+    var skipped = [];
+    var notes = [];
     var root = rootMatrix(svg, fromIllustrator(doc, svg) ? 1 : CSS_PT.px);
-    (function walk(el, m) {
+    (function walk(el, m, size) {
       for (var c = el.firstElementChild; c; c = c.nextElementSibling) {
         if (SKIP[c.localName] || hidden(c)) continue;
         var cm = mul(m, parseTransform(c.getAttribute('transform')));
         var d = shapeD(c);
+        if (d === null && c.localName === 'svg') {
+          var vp = viewport(c, size, fileName);
+          if (vp) walk(c, mul(cm, vp.m), vp.size);
+          continue;
+        }
         if (d === null) {
-          walk(c, cm);
+          walk(c, cm, size);
           continue;
         }
         if (!d.trim()) continue;
         var label = c.getAttribute('id') || c.getAttribute('inkscape:label') || '<' + c.localName + '>';
-        var paths = DF.core.pathFromSvg(d);
-        for (var i = 0; i < paths.length; i++) {
-          shapes.push({
-            name: paths.length > 1 ? label + ' (' + (i + 1) + '/' + paths.length + ')' : label,
-            path: DF.core.transformPath(paths[i], cm),
-          });
+        var paths = DF.core.pathFromSvg(d).map(function (p) { return DF.core.transformPath(p, cm); });
+        if (!paths.length) continue;
+        var outer = paths.length > 1 ? outerIndex(paths) : 0;
+        if (outer < 0) {
+          skipped.push({ name: label, reason: 'a compound path of ' + paths.length + ' separate outlines in ' + fileName + ': split it into separate shapes (Inkscape: Path › Break Apart; Illustrator: Object › Compound Path › Release)' });
+          continue;
         }
+        if (paths.length > 1) {
+          var holes = paths.length - 1;
+          notes.push('“' + label + '” is a compound path: its outer outline is used, ' + (holes === 1 ? 'its hole is' : 'its ' + holes + ' holes are') + ' ignored.');
+        }
+        shapes.push({ name: label, path: paths[outer] });
       }
-    })(svg, root);
-    if (!shapes.length) throw new Error(fileName + ' has no <path>, <rect>, <circle>, <ellipse> or <polygon> to use.');
-    return { unit: fileUnit(svg), shapes: shapes };
+    })(svg, root, rootSize(svg));
+    if (!shapes.length && skipped.length) throw new Error(fileName + ': no shape to use (skipped: ' + skipped.map(function (s) { return s.name + ', ' + s.reason; }).join('; ') + ').');
+    if (!shapes.length) throw new Error(fileName + ' has no <path>, <rect>, <circle>, <ellipse>, <polygon> or <polyline> to use.');
+    return { unit: fileUnit(svg), shapes: shapes, skipped: skipped, notes: notes };
   }
   DF.svgImport = { parse: parse, parseTransform: parseTransform, ellipseD: ellipseD };
 })(window.DF = window.DF || {});

@@ -209,7 +209,7 @@
     return out.join('\n') + '\n';
   }
 
-  /** ASCII STL of the mesh (facet normals from the vertex order), scaled by `scale`. */
+  /** ASCII STL of the mesh (facet normals from the vertex order), scaled by `scale` (the panel writes mm). */
   function toStl(mesh, scale) {
     var out = ['solid d-form'];
     mesh.triangles.forEach(function (t) {
