@@ -119,3 +119,22 @@ fn wrong_piece_counts_are_refused() {
         assert_eq!(e, format!("Expected exactly two pieces to connect, got {n}."));
     }
 }
+
+/// Regression: two holes on a 60 × 40 rectangle with the default inset (half the 100 pitch) go
+/// straight through it and out of the far side; the warning said "cross the edge: increase the
+/// inset", the opposite of the fix. They are named as outside the piece, with "reduce the inset".
+#[test]
+fn holes_through_a_narrow_piece_are_called_outside_and_told_to_reduce_the_inset() {
+    let a = rect(0.0, 0.0, 60.0, 40.0, true);
+    let b = rect(100.0, 0.0, 50.0, 50.0, true);
+    let r = connect(&[a, b], &ConnectOptionsDto { count: Some(2.0), slide: Some(0.5), ..Default::default() }).unwrap();
+    for (k, h) in r.pieces[0].holes.iter().enumerate() {
+        let (at, n) = on_rect(0.0, 0.0, 60.0, 40.0, true, (k as f64 + 0.5) * 100.0);
+        let want = [at[0] + 50.0 * n[0], at[1] + 50.0 * n[1]];
+        assert!((h.center[0] - want[0]).hypot(h.center[1] - want[1]) < 1e-9, "hole {}: wanted {want:?}, got {:?}", k + 1, h.center);
+        assert!(!(0.0..=40.0).contains(&h.center[1]), "hole {} should lie outside the 40-high piece: {:?}", k + 1, h.center);
+    }
+    let first: Vec<&String> = r.warnings.iter().filter(|w| w.starts_with("On the first piece")).collect();
+    assert!(first.iter().any(|w| w.contains("connectors 1, 2 lie outside") && w.contains("reduce the inset")), "warnings: {:?}", r.warnings);
+    assert!(r.warnings.iter().all(|w| !w.contains("increase the inset")), "warnings: {:?}", r.warnings);
+}

@@ -144,7 +144,8 @@ proptest! {
                 let n = k + 1;
                 let excused = |list: &Option<Vec<usize>>| list.as_ref().is_none_or(|l| l.contains(&n));
                 if d < radius * (1.0 - 1e-6) {
-                    prop_assert!(excused(&crossing), "{name} hole {n} crosses the edge (distance {d} < radius {radius}) unwarned: {:?}", r.warnings);
+                    // Named as crossing, or as outside when its centre went through the piece.
+                    prop_assert!(excused(&crossing) || excused(&outside), "{name} hole {n} crosses the edge (distance {d} < radius {radius}) unwarned: {:?}", r.warnings);
                 } else if d > radius * (1.0 + 1e-6) && !inside(&segs[j], h.center) {
                     prop_assert!(excused(&outside), "{name} hole {n} is outside its piece unwarned: {:?}", r.warnings);
                 }

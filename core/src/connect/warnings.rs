@@ -258,16 +258,21 @@ pub fn holes(piece: &str, centers: &[Point], radius: f64, edge: &Edge, inside: b
     let mut crossing = Vec::new();
     let mut wrong_side = Vec::new();
     let mut scratch = Vec::new();
+    // A centre on the wrong side went through a part of the piece narrower than the inset: that
+    // is the more useful thing to say, even when its hole also crosses the edge. Every other
+    // crossing is with another stretch of the edge (the hole clears its own stretch, as the inset
+    // is at least the radius), i.e. a narrow part or a bend tighter than the inset: a larger
+    // inset only pushes the hole further across.
     for (k, &c) in centers.iter().enumerate() {
-        if edge.comes_within(c, radius, &mut scratch) {
-            crossing.push((k + 1).to_string());
-        } else if edge.contains(c) != inside {
+        if edge.contains(c) != inside {
             wrong_side.push((k + 1).to_string());
+        } else if edge.comes_within(c, radius, &mut scratch) {
+            crossing.push((k + 1).to_string());
         }
     }
     if !crossing.is_empty() {
         out.push(format!(
-            "On the {piece}, the holes of connectors {} cross the edge: increase the inset, use smaller holes or move the connectors away from tight curves.",
+            "On the {piece}, the holes of connectors {} cross the edge: use smaller holes or a smaller inset, or move the connectors away from tight curves and narrow parts.",
             list(&crossing)
         ));
     }
