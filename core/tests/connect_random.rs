@@ -9,7 +9,7 @@
 
 mod common;
 use common::*;
-use dformer::api::{self, connect::ConnectOptionsDto, normalize::NormalizeOptionsDto, path::PathDto, value::Value};
+use dformer::api::{self, connect::ConnectOptionsDto};
 use proptest::prelude::*;
 
 fn dist(a: P, b: P) -> f64 {
@@ -90,15 +90,8 @@ proptest! {
         a in star(), b in star(), count in 3usize..48, slide in 0.0f64..1.0, start in (0.0f64..1.0, 0.0f64..1.0),
         inset in 0.1f64..0.6, diameter in 0.1f64..0.5,
     ) {
-        let opts = NormalizeOptionsDto { target: Some(Value::Text("mean".into())), ..Default::default() };
-        let pieces = match api::normalize(&[a, b], &opts) {
-            Ok(r) => r.paths,
-            Err(dformer::Error::SelfIntersection { .. }) => return Ok(()),
-            Err(e) => return Err(TestCaseError::fail(format!("valid stars rejected: {e}"))),
-        };
-        let segs = [cubics(&pieces[0]), cubics(&pieces[1])];
-        let lens: Vec<Vec<f64>> = segs.iter().map(|s| s.iter().map(|&c| cubic_len_adaptive(c)).collect()).collect();
-        let perimeter = ksum(lens[0].iter().copied());
+        let Some(pieces) = normalized_pair(a, b)? else { return Ok(()) };
+        let (segs, lens, perimeter) = segments_and_lengths(&pieces);
         let pitch = perimeter / count as f64;
         let o = ConnectOptionsDto {
             count: Some(count as f64), slide: Some(slide), start: Some([start.0 * perimeter, start.1 * perimeter]),

@@ -5,7 +5,7 @@
 
 mod common;
 use common::*;
-use dformer::api::{self, normalize::NormalizeOptionsDto, simulate::SimulateOptionsDto, value::Value};
+use dformer::api::{self, simulate::SimulateOptionsDto};
 use proptest::prelude::*;
 use std::collections::HashMap;
 
@@ -53,16 +53,8 @@ fn signed_area(p: &[P]) -> f64 {
 /// A convex piece: an ellipse (axes ratio 1–3, turned, anywhere), as 4–8 cubic arcs.
 fn oval() -> impl Strategy<Value = dformer::api::path::PathDto> {
     (1.0f64..3.0, 0.0f64..std::f64::consts::PI, 4usize..9, -100.0f64..100.0, 1.0f64..50.0).prop_map(|(ratio, turn, knots, o, size)| {
-        let e = ellipse([0.0, 0.0], ratio * size, size, knots, false);
         let (c, s) = (turn.cos(), turn.sin());
-        let f = |q: P| [o + c * q[0] - s * q[1], o + s * q[0] + c * q[1]];
-        let mut out = e.clone();
-        for pt in &mut out.points {
-            pt.anchor = f(pt.anchor);
-            pt.left = pt.left.map(f);
-            pt.right = pt.right.map(f);
-        }
-        out
+        mapped(&ellipse([0.0, 0.0], ratio * size, size, knots, false), |q| [o + c * q[0] - s * q[1], o + s * q[0] + c * q[1]])
     })
 }
 
@@ -73,15 +65,8 @@ proptest! {
     fn random_pieces_give_a_closed_bounded_mesh_with_honest_stats(
         a in prop_oneof![star(), oval()], b in prop_oneof![star(), oval()], n in 16usize..40, offset in 0.0f64..1.0,
     ) {
-        let opts = NormalizeOptionsDto { target: Some(Value::Text("mean".into())), ..Default::default() };
-        let pieces = match api::normalize(&[a, b], &opts) {
-            Ok(r) => r.paths,
-            Err(dformer::Error::SelfIntersection { .. }) => return Ok(()),
-            Err(e) => return Err(TestCaseError::fail(format!("valid stars rejected: {e}"))),
-        };
-        let segs = [cubics(&pieces[0]), cubics(&pieces[1])];
-        let lens: Vec<Vec<f64>> = segs.iter().map(|s| s.iter().map(|&c| cubic_len_adaptive(c)).collect()).collect();
-        let perimeter = ksum(lens[0].iter().copied());
+        let Some(pieces) = normalized_pair(a, b)? else { return Ok(()) };
+        let (segs, lens, perimeter) = segments_and_lengths(&pieces);
         let o = SimulateOptionsDto { offset: Some(offset * perimeter), resolution: Some(n as f64), ..Default::default() };
         let r = api::simulate::simulate(&pieces, &o).map_err(|e| TestCaseError::fail(format!("simulate: {e}")))?;
         let x = &r.vertices;

@@ -166,7 +166,8 @@ class ConnectProperties(unittest.TestCase):
     def test_px_document_with_warnings_still_writes_and_reports_them(self):
         svg, err = self.check_stitch("connect_px.svg", ["--count=12", "--diameter=3", "--inset=8", "--slide=0.25"], 12, 8.0, 3.0, 0.25)
         self.assertIn("D-former warnings", err, "the core's warnings must reach the user")
-        self.assertIn("cross the edge", err)
+        # check_stitch has matched the holes it names against the ones it measures off the piece.
+        self.assertTrue("cross the edge" in err or "lie outside" in err, err)
 
     def test_layers_follow_the_laser_colour_convention(self):
         svg, _, _ = run(Connect, "connect_mm.svg", "--id=A", "--id=B", "--count=12", "--slide=0.25")

@@ -53,18 +53,7 @@
   }
 
   function movePath(path, dx, dy) {
-    function mv(q) {
-      return q ? [q[0] + dx, q[1] + dy] : q;
-    }
-    return {
-      closed: path.closed,
-      points: path.points.map(function (q) {
-        var out = { anchor: mv(q.anchor) };
-        if (q.left) out.left = mv(q.left);
-        if (q.right) out.right = mv(q.right);
-        return out;
-      }),
-    };
+    return DF.core.transformPath(path, [1, 0, 0, 1, dx, dy]);
   }
   /**
    * The pieces placed left to right, GAP apart, tops aligned (document points, y up). Normalizing

@@ -171,12 +171,16 @@ pub fn ellipse(c: P, a: f64, b: f64, n: usize, cw: bool) -> PathDto {
 
 /// The path scaled by `scale` about the origin, then shifted by `offset`.
 pub fn moved(p: &PathDto, scale: f64, offset: P) -> PathDto {
-    let f = |q: P| [q[0] * scale + offset[0], q[1] * scale + offset[1]];
+    mapped(p, |q| [q[0] * scale + offset[0], q[1] * scale + offset[1]])
+}
+
+/// The path with every anchor and handle mapped by `f` (an affine map maps the curve exactly).
+pub fn mapped(p: &PathDto, f: impl Fn(P) -> P) -> PathDto {
     let mut out = p.clone();
     for pt in &mut out.points {
         pt.anchor = f(pt.anchor);
-        pt.left = pt.left.map(f);
-        pt.right = pt.right.map(f);
+        pt.left = pt.left.map(&f);
+        pt.right = pt.right.map(&f);
     }
     out
 }
@@ -257,4 +261,25 @@ pub fn head(c: &Cubic, t: f64) -> Cubic {
     let (p01, p12, p23) = (lerp(c[0], c[1]), lerp(c[1], c[2]), lerp(c[2], c[3]));
     let (p012, p123) = (lerp(p01, p12), lerp(p12, p23));
     [c[0], p01, p012, lerp(p012, p123)]
+}
+
+/// Two random pieces scaled to their mean perimeter, or `None` for the strategies' rare
+/// self-intersecting draw; any other refusal fails the test.
+pub fn normalized_pair(a: PathDto, b: PathDto) -> Result<Option<Vec<PathDto>>, TestCaseError> {
+    use dformer::api::{self, normalize::NormalizeOptionsDto, value::Value};
+    let opts = NormalizeOptionsDto { target: Some(Value::Text("mean".into())), ..Default::default() };
+    match api::normalize(&[a, b], &opts) {
+        Ok(r) => Ok(Some(r.paths)),
+        Err(dformer::Error::SelfIntersection { .. }) => Ok(None),
+        Err(e) => Err(TestCaseError::fail(format!("valid pieces rejected: {e}"))),
+    }
+}
+
+/// Both pieces' segments, their independent lengths ([`cubic_len_adaptive`]) and the first
+/// piece's perimeter.
+pub fn segments_and_lengths(pieces: &[PathDto]) -> ([Vec<Cubic>; 2], Vec<Vec<f64>>, f64) {
+    let segs = [cubics(&pieces[0]), cubics(&pieces[1])];
+    let lens: Vec<Vec<f64>> = segs.iter().map(|s| s.iter().map(|&c| cubic_len_adaptive(c)).collect()).collect();
+    let perimeter = ksum(lens[0].iter().copied());
+    (segs, lens, perimeter)
 }
