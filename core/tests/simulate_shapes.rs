@@ -162,6 +162,23 @@ fn rounded_rectangle_with_circle_converges_to_a_convex_shape() {
     assert!((v64 - v).abs() / v < 5e-3, "volume 64 vs 128 seam vertices: {v64} vs {v}");
 }
 
+/// Regression: a rectangle glued to a circle never converged (strain ~10 %). Its corners fell
+/// between seam samples, so each straddling seam edge was a corner-cutting chord on the rectangle
+/// and a full chord on the circle: no shape can have both lengths. Corners are now seam vertices.
+#[test]
+fn rectangle_with_circle_converges_with_its_corners_on_the_seam() {
+    let r = Contour::new([(0.0, 0.0), (80.0, 0.0), (80.0, 20.0), (0.0, 20.0)].iter().map(|&(x, y)| Knot::corner(Point::new(x, y))).collect(), 0).unwrap();
+    let c = circle_arcs(16).transformed(Affine::scale(200.0 / perimeter(&circle_arcs(16))));
+    let s = run(&r, &c, 0.0, 128);
+    assert!(s.stats.converged, "wanted converged, got {:?}", s.stats);
+    assert_closed(&s);
+    assert!(s.stats.max_strain < 1e-3, "max strain: wanted < 1e-3, got {}", s.stats.max_strain);
+    let cv = convexity_violation(&s);
+    assert!(cv < 1e-5, "a vertex lies {cv} (relative) outside a face plane: not convex");
+    let v64 = run(&r, &c, 0.0, 64).stats.volume;
+    assert!((v64 - s.stats.volume).abs() / s.stats.volume < 5e-3, "volume 64 vs 128 seam vertices: {v64} vs {}", s.stats.volume);
+}
+
 #[test]
 fn volume_is_the_same_at_two_resolutions() {
     let e = ellipse(2.0, 1.0);

@@ -56,9 +56,14 @@ impl Triangulation {
             }
             tris.push([a, b, c]);
         }
-        // The coarse triangles must not swallow a new sample either.
+        // The coarse triangles must stay proper triangles at the fine positions (a sample moved
+        // onto a corner at one level need not sit there at the other) and must not swallow a new
+        // sample either.
         for t in &self.tris {
             let [a, b, c] = t.map(|v| fine[2 * v]);
+            if orient(a, b, c) <= eps {
+                return None;
+            }
             for m in 0..self.n {
                 let p = fine[2 * m + 1];
                 if orient(a, b, p) > eps && orient(b, c, p) > eps && orient(c, a, p) > eps {

@@ -3,8 +3,14 @@
 //! (the `start` convention of `connect`). B is then mirrored (x → −x), an isometry of the plane,
 //! so that both sample polygons run counter-clockwise: vertex k of A and vertex k of B are the
 //! same seam vertex.
+//!
+//! Corners (a turn of the tangent at an anchor, of either piece) are seam vertices: the nearest
+//! sample moves onto each one. A seam edge straddling a corner would cut it on that piece only,
+//! so its two flat lengths (the chords of A and B) would differ by `O(h·θ²)` for a turn θ instead
+//! of `O(h³κ²)`: a rectangle's corner sampled between vertices gives ~10 % strain that no
+//! realization can remove.
 
-use crate::arclen::ArcTable;
+use crate::arclen::{unit_tangent, ArcTable};
 use crate::contour::Contour;
 use crate::error::{Error, Result};
 use crate::validate;
@@ -15,6 +21,10 @@ pub const SAMPLE_ACCURACY: f64 = 1e-11;
 
 /// Largest relative perimeter difference that can be stitched (the same rule as `connect`).
 pub const PERIMETER_TOLERANCE: f64 = 1e-6;
+
+/// Smallest turn of the tangent at an anchor (radians) that makes it a corner the seam samples
+/// are placed on: below it the two chords of a straddling seam edge differ by < 1e-4·h.
+pub const CORNER_TURN: f64 = 0.02;
 
 /// One sampled piece, in its own flat coordinates.
 #[derive(Debug, Clone)]
@@ -42,6 +52,8 @@ pub struct Glue {
     tb: ArcTable,
     area: [f64; 2],
     offset: f64,
+    /// Seam positions (arc length along A's walk, in `[0, L)`) of both pieces' corners, sorted.
+    corners: Vec<f64>,
 }
 
 impl Glue {
@@ -69,23 +81,56 @@ impl Glue {
         if (pa - pb).abs() > PERIMETER_TOLERANCE * pa.max(pb) {
             return Err(Error::PerimeterMismatch { a: pa, b: pb });
         }
-        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], offset })
+        let mut corners: Vec<f64> = corners(&ta).into_iter().chain(corners(&tb).into_iter().map(|s| s - offset)).map(|s| ta.wrap(s)).collect();
+        crate::order::sort_f64(&mut corners);
+        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], offset, corners })
+    }
+
+    /// Seam positions of `n` samples: equal steps `h = L/n` from 0, with the nearest free sample
+    /// moved onto each corner (see the module docs). A sample moves by at most `h/2` and the
+    /// positions stay strictly increasing; sample 0 stays at A's first anchor. A corner with no
+    /// free sample near it (several corners within one step) keeps the step.
+    pub fn positions(&self, n: usize) -> Vec<f64> {
+        let total = self.ta.total();
+        let h = total / n as f64;
+        let mut u: Vec<f64> = (0..n).map(|k| k as f64 * h).collect();
+        let mut snapped = vec![false; n];
+        snapped[0] = true;
+        for &c in &self.corners {
+            let near = (c / h).round() as usize;
+            for k in [near, near + 1, near.wrapping_sub(1)] {
+                if k == 0 || k >= n || snapped[k] {
+                    continue;
+                }
+                let before = u[k - 1];
+                let after = if k + 1 < n { u[k + 1] } else { total };
+                if c > before && c < after && (c - k as f64 * h).abs() <= h {
+                    u[k] = c;
+                    snapped[k] = true;
+                    break;
+                }
+            }
+        }
+        u
     }
 
     pub fn perimeter(&self) -> f64 {
         self.ta.total()
     }
 
-    /// Both pieces sampled at `n` seam vertices.
+    /// Both pieces sampled at `n` seam vertices ([`Glue::positions`]).
     pub fn sample(&self, n: usize) -> SeamPieces {
+        let u = self.positions(n);
+        let total = self.ta.total();
         let sample = |t: &ArcTable, start: f64, mirror: f64| -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
-            let h = t.total() / n as f64;
+            // B's own perimeter may differ from A's by up to the stitching tolerance.
+            let k = t.total() / total;
             let at = |s: f64| {
-                let p = t.point_at(s);
+                let p = t.point_at(start + k * s);
                 [mirror * p.x, p.y]
             };
-            let pts = (0..n).map(|k| at(start + k as f64 * h)).collect();
-            let mid = (0..n).map(|k| at(start + (k as f64 + 0.5) * h)).collect();
+            let pts = u.iter().map(|&s| at(s)).collect();
+            let mid = (0..n).map(|i| at(0.5 * (u[i] + if i + 1 < n { u[i + 1] } else { total }))).collect();
             (pts, mid)
         };
         let (pts_a, mid_a) = sample(&self.ta, 0.0, 1.0);
@@ -106,5 +151,75 @@ impl SeamPieces {
     pub fn chord(&self, p: usize, i: usize, j: usize) -> f64 {
         let (a, b) = (self.flat[p].pts[i], self.flat[p].pts[j]);
         (a[0] - b[0]).hypot(a[1] - b[1])
+    }
+}
+
+/// Arc lengths (from knot 0) of the anchors where the tangent turns by more than
+/// [`CORNER_TURN`]; zero-length segments are looked through.
+fn corners(t: &ArcTable) -> Vec<f64> {
+    let n = t.segment_count();
+    let live: Vec<usize> = (0..n).filter(|&i| t.segment_start(i + 1) > t.segment_start(i)).collect();
+    let mut out = Vec::new();
+    for (j, &i) in live.iter().enumerate() {
+        let prev = live[(j + live.len() - 1) % live.len()];
+        let (a, b) = (unit_tangent(t.segment(prev), 1.0), unit_tangent(t.segment(i), 0.0));
+        if a.cross(b).atan2(a.dot(b)).abs() > CORNER_TURN {
+            out.push(t.segment_start(i));
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contour::Knot;
+    use kurbo::Point;
+
+    /// A circle of perimeter `p` as 16 cubic arcs (no corners), counter-clockwise.
+    fn circle(p: f64) -> Contour {
+        let r = p / std::f64::consts::TAU;
+        let th = std::f64::consts::TAU / 16.0;
+        let k = 4.0 / 3.0 * (th / 4.0).tan() * r;
+        let knots = (0..16)
+            .map(|i| {
+                let (s, c) = (th * i as f64).sin_cos();
+                let a = Point::new(r * c, r * s);
+                Knot { anchor: a, left: Point::new(a.x + k * s, a.y - k * c), right: Point::new(a.x - k * s, a.y + k * c) }
+            })
+            .collect();
+        Contour::new(knots, 1).unwrap()
+    }
+
+    fn rectangle(w: f64, h: f64) -> Contour {
+        let pts = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)];
+        Contour::new(pts.iter().map(|&(x, y)| Knot::corner(Point::new(x, y))).collect(), 0).unwrap()
+    }
+
+    #[test]
+    fn corners_are_seam_vertices_and_smooth_pieces_keep_equal_steps() {
+        // Rectangle 80 × 20 (corners at arc lengths 0, 80, 100, 180 of 200) with a circle.
+        let rect = rectangle(80.0, 20.0);
+        let disc = circle(200.0);
+        // The perimeters equal to far better than the 1e-6 rule.
+        let rescaled = disc.transformed(kurbo::Affine::scale(200.0 / ArcTable::new(&disc, 1e-13).total()));
+        for n in [32, 37, 64, 100] {
+            let glue = Glue::new(&rect, &rescaled, 0.0).unwrap();
+            let u = glue.positions(n);
+            let h = 200.0 / n as f64;
+            assert_eq!(u.len(), n);
+            assert!(u.windows(2).all(|w| w[0] < w[1]) && u[n - 1] < 200.0, "n = {n}: positions not increasing: {u:?}");
+            for c in [0.0, 80.0, 100.0, 180.0] {
+                assert!(u.iter().any(|&x| (x - c).abs() < 1e-9), "n = {n}: corner at {c} is not a seam vertex: {u:?}");
+            }
+            for (k, &x) in u.iter().enumerate() {
+                assert!((x - k as f64 * h).abs() <= h, "n = {n}: sample {k} moved from {} to {x}", k as f64 * h);
+            }
+            // The circle alone (glued to itself) has no corners: exactly equal steps.
+            let g = Glue::new(&rescaled, &rescaled, 17.0).unwrap();
+            let step = g.perimeter() / n as f64;
+            let smooth = g.positions(n);
+            assert!(smooth.iter().enumerate().all(|(k, &x)| x == k as f64 * step), "n = {n}: a smooth gluing moved samples");
+        }
     }
 }
