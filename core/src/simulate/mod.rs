@@ -11,7 +11,8 @@
 //! theorem (Alexandrov 1950, uniqueness by Pogorelov); it is the convex hull of its seam and its
 //! flat parts carry no creases, so all curvature lives on the seam (Demaine & Price 2010,
 //! "Generalized D-forms have no spurious creases"). Sampling the seam at `N` equal arc-length
-//! steps therefore gives a *polyhedral metric whose only vertices are seam vertices*: each piece
+//! steps (with every corner of either piece moved onto a sample, see [`seam`]) therefore gives a
+//! *polyhedral metric whose only vertices are seam vertices*: each piece
 //! becomes the flat polygon of its `N` samples, and the surface is a convex polyhedron whose
 //! faces are triangles spanned by chords of those polygons. In a chord triangulation of a convex
 //! polygon every edge's flat length is the Euclidean chord (the geodesic of a convex piece), so
@@ -35,7 +36,11 @@
 //! convex hull of the seam (Huang et al. 2023 use the same two ingredients, isometry + convex
 //! hull, as penalty terms; here convexity is enforced exactly through the combinatorics).
 //! Quadratic convergence of Gauss–Newton on a square system gives 1e-12 strain in a handful of
-//! steps, and a warm start (a previous result's vertices) keeps the slider interactive.
+//! steps, and a warm start (a previous result's vertices) keeps the slider interactive. Which
+//! isometric branch the solver lands on depends on the start, so a cold solve is a multistart
+//! over saddle heights on a coarse-to-fine ladder, first with tight step budgets, then (only if
+//! that found no convex branch) with patient ones: nearly flat regions (pieces with straight
+//! stretches) settle slowly but correctly.
 //!
 //! *Why not the alternatives.* Bobenko–Izmestiev (geometry-central's `embedConvex`) is exact and
 //! fast but needs strictly positive curvature and fails on the flat doubly covered case (two
