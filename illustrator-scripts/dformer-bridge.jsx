@@ -2,7 +2,7 @@
  * D-former document bridge for Adobe Illustrator (ExtendScript, strict ES3).
  * The CEP panel calls the dformer_* functions through CSInterface.evalScript; each returns a JSON
  * string and never throws. Contract and selection rules: BRIDGE.md next to this file.
- * Coordinates are Illustrator scripting coordinates: points, y axis up.
+ * Coordinates are Illustrator scripting coordinates in DOCUMENTCOORDINATESYSTEM: points, y axis up.
  */
 
 // ---------------------------------------------------------------------------------------------
@@ -185,21 +185,38 @@ function dformer_fail(message) {
 
 /**
  * Run body and turn its result or any thrown value into the bridge's JSON answer.
+ * Coordinates: app.coordinateSystem is one global setting that other scripts often leave on
+ * ARTBOARDCOORDINATESYSTEM, where positions are relative to whichever artboard is active. Every
+ * entry point runs in DOCUMENTCOORDINATESYSTEM, so that what is read on one artboard is written back
+ * to the same place after the student clicks another one, and restores the previous value afterwards
+ * (the finally also runs when body throws).
  * @param {function(): Object} body @returns {string}
  */
 function dformer_run(body) {
+  var out;
+  /** @type {*} */
+  var saved = null;
   try {
+    if (app.documents.length > 0 && app.coordinateSystem != CoordinateSystem.DOCUMENTCOORDINATESYSTEM) {
+      saved = app.coordinateSystem;
+      app.coordinateSystem = CoordinateSystem.DOCUMENTCOORDINATESYSTEM;
+    }
     var r = body();
     r.ok = true;
-    return dformer_stringify(r);
+    out = dformer_stringify(r);
   } catch (e) {
     var err = /** @type {*} */ (e);
     var msg;
     if (err && typeof err.dformer === "string") msg = err.dformer;
     else msg = "Illustrator reported an error: " + (err && err.message ? err.message : String(err)) +
       (err && err.line ? " (dformer-bridge.jsx line " + err.line + ")" : "");
-    return dformer_stringify({ ok: false, error: msg });
+    out = dformer_stringify({ ok: false, error: msg });
+  } finally {
+    if (saved !== null) {
+      try { app.coordinateSystem = saved; } catch (e2) { /* the answer matters more than the setting */ }
+    }
   }
+  return out;
 }
 
 /** @returns {Document} */
