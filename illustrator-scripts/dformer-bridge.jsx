@@ -457,7 +457,7 @@ function dformer_units() {
   return dformer_run(function () {
     var doc = dformer_doc();
     var u = dformer_unitsOf(doc);
-    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, rulerUnits: u.rulerUnits };
+    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, rulerUnits: u.rulerUnits, colorMode: dformer_isCmyk(doc) ? "CMYK" : "RGB" };
   });
 }
 
@@ -467,7 +467,8 @@ function dformer_selectionKey() {
     if (app.documents.length === 0) return { key: "" };
     var doc = app.activeDocument;
     var c = dformer_collect(doc);
-    var parts = [doc.name, String(doc.rulerUnits), String(c.skipped.length)];
+    // Colour mode too: switching it (File > Document Color Mode) changes what the panel tells the student.
+    var parts = [doc.name, String(doc.rulerUnits), dformer_isCmyk(doc) ? "CMYK" : "RGB", String(c.skipped.length)];
     for (var i = 0; i < c.paths.length; i++) {
       var p = c.paths[i].item;
       var sel = [];
@@ -505,7 +506,7 @@ function dformer_selection() {
         path: r.path, selectedAnchors: r.selectedAnchors, allSelected: r.allSelected, length: p.length
       });
     }
-    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, items: items, skipped: c.skipped };
+    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, colorMode: dformer_isCmyk(doc) ? "CMYK" : "RGB", items: items, skipped: c.skipped };
   });
 }
 
@@ -668,6 +669,21 @@ function dformer_plan(doc, req) {
     pieces.push(piece);
   }
 
+  // Colours: the layer colours are the exact RGB values laser software matches cut/score/engrave by.
+  // In a CMYK document Illustrator translates an RGBColor into CMYK inks (CMYKColor in the Scripting
+  // Reference: the translation "can lose information"), and no CMYKColor comes back out as exactly
+  // 255,0,0 either; only the student can change the mode (documentColorSpace is read-only).
+  var colored = [];
+  for (var rc = 0; rc < roles.length; rc++) {
+    var CL = layers[roles[rc]];
+    if (CL.needed) colored.push(CL.name + " " + CL.color.join(","));
+  }
+  if (colored.length && dformer_isCmyk(doc)) {
+    dformer_fail("This document uses CMYK colour (a Print document): Illustrator would turn the laser colours (" +
+      colored.join("; ") + ") into CMYK ink values, and laser software that tells cut, score and engrave apart by " +
+      "exact RGB colour would no longer recognise them. Choose File > Document Color Mode > RGB Color, then Apply again. Nothing was changed.");
+  }
+
   // Target layers: existing ones must be writable.
   for (var t = 0; t < roles.length; t++) {
     var L = layers[roles[t]];
@@ -680,6 +696,11 @@ function dformer_plan(doc, req) {
     }
   }
   return { updates: updates, pieces: pieces, layers: layers, replace: req.replace !== false };
+}
+
+/** Document.documentColorSpace is CMYK (File > Document Color Mode). @param {Document} doc @returns {boolean} */
+function dformer_isCmyk(doc) {
+  return doc.documentColorSpace == DocumentColorSpace.CMYK;
 }
 
 /** @param {Array<number>} c @returns {RGBColor} */

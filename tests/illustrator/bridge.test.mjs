@@ -447,3 +447,33 @@ test('the coordinate system is restored when a bridge call fails, and every entr
   assert.match(call(noDoc, 'dformer_selection').error, /No document is open/);
   assert.equal(noDoc.app.coordinateSystem, noDoc.context.CoordinateSystem.ARTBOARDCOORDINATESYSTEM);
 });
+
+test('CMYK document: Apply that would write laser colours is refused with the menu to fix it; nothing changes', () => {
+  const h = twoShapes({ colorSpace: 'CMYK' });
+  const sel = call(h, 'dformer_selection');
+  assert.equal(sel.colorMode, 'CMYK');
+  assert.equal(call(h, 'dformer_units').colorMode, 'CMYK');
+  const key = call(h, 'dformer_selectionKey').key;
+  const before = h.snapshot();
+  const r = call(h, 'dformer_apply', payloadFor(sel));
+  assert.equal(r.ok, false, 'refused');
+  assert.match(r.error, /This document uses CMYK colour/);
+  assert.match(r.error, /Laser cut 255,0,0; Score 0,0,255; Engrave 0,0,0/, 'names the colours it would have written');
+  assert.match(r.error, /Choose File > Document Color Mode > RGB Color, then Apply again\. Nothing was changed\.$/);
+  assert.deepEqual(h.snapshot(), before, 'not even the in-place update is written');
+
+  // Reshaping paths writes no colour: allowed in a CMYK document.
+  const p = payloadFor(sel);
+  const only = call(h, 'dformer_apply', { document: p.document, updates: p.updates });
+  assert.equal(only.ok, true, only.error);
+  assert.equal(only.updated, 1);
+
+  // The student switches the document to RGB: the panel sees it, and Apply writes the exact RGB colours.
+  h.doc._colorSpace = h.context.DocumentColorSpace.RGB;
+  assert.notEqual(call(h, 'dformer_selectionKey').key, key, 'the fingerprint changes with the colour mode');
+  assert.equal(call(h, 'dformer_selection').colorMode, 'RGB');
+  assert.equal(call(h, 'dformer_apply', payloadFor(sel)).ok, true);
+  const hole = h.doc.layers.getByName('Laser cut').groupItems.getByName('D-former piece A connectors').pathItems.getByName('hole 1');
+  assert.equal(hole.strokeColor.typename, 'RGBColor');
+  assert.deepEqual([hole.strokeColor.red, hole.strokeColor.green, hole.strokeColor.blue], [255, 0, 0]);
+});

@@ -194,3 +194,10 @@ test('app.coordinateSystem: ARTBOARD reads and writes relative to the active art
   assert.throws(() => { h.app.coordinateSystem = 7; }, /CoordinateSystem/);
   assert.throws(() => h.doc.artboards.setActiveArtboardIndex(2), /No such element/);
 });
+
+test('Document.documentColorSpace is read-only: RGB by default, CMYK when the host says so', () => {
+  assert.equal(String(createHost().doc.documentColorSpace), 'DocumentColorSpace.RGB');
+  const h = createHost({ colorSpace: 'CMYK' });
+  assert.equal(h.doc.documentColorSpace, h.context.DocumentColorSpace.CMYK);
+  assert.throws(() => { h.doc.documentColorSpace = h.context.DocumentColorSpace.RGB; });
+});

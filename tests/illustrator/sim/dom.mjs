@@ -20,9 +20,11 @@
 //   pivot of resize) is relative to the top-left corner of the ACTIVE artboard (the guide's "Page-item
 //   positioning": the artboard's coordinate origin is its top-left corner; Artboard.rulerOrigin is taken
 //   as its default [0,0]). Simulator choice: the y axis stays up in both systems (geometricBounds top >
-//   bottom), as scripts observe; only the origin moves. Lengths and other relative values do not change.
+//   bottom), as scripts observe; only the origin moves. Lengths and other relative values do not change;
+//   - Document.documentColorSpace is read-only (RGB unless the host says CMYK); colours are stored as
+//   assigned (Illustrator's translation of RGB colours in a CMYK document is not simulated).
 import { cubicBounds, cubicLength, segmentsOf } from './bezier.mjs';
-import { CoordinateSystem, PathPointSelection, PointType, RulerUnits, Transformation, Justification, UNIT_MEMBERS } from './enums.mjs';
+import { CoordinateSystem, DocumentColorSpace, PathPointSelection, PointType, RulerUnits, Transformation, Justification, UNIT_MEMBERS } from './enums.mjs';
 
 const NO_SUCH = () => new Error('No such element');
 const LOCKED = () => new Error('Target layer cannot be modified');
@@ -63,7 +65,7 @@ function isPair(v) {
 }
 
 export class Sim {
-  constructor({ uuid = true, units = 'mm', float32 = false, name = 'Untitled-1.ai' } = {}) {
+  constructor({ uuid = true, units = 'mm', float32 = false, name = 'Untitled-1.ai', colorSpace = 'RGB' } = {}) {
     this.hasUuid = uuid;
     this.float32 = float32;
     this.nextUuid = 1;
@@ -72,7 +74,7 @@ export class Sim {
     this.documents = [];
     this.coordinateSystem = CoordinateSystem.DOCUMENTCOORDINATESYSTEM;
     this.coordinateUses = {};      // "CoordinateSystem.X" → how many coordinates were read or written in it (tests)
-    if (units !== null) this.documents.push(new Document(this, name, units));
+    if (units !== null) this.documents.push(new Document(this, name, units, colorSpace));
   }
   /** Where the current coordinate system's [0,0] is, in document coordinates. */
   origin(doc) {
@@ -188,9 +190,11 @@ export class Artboard extends Node {
 }
 
 export class Document extends Node {
-  constructor(sim, name, units) {
+  constructor(sim, name, units, colorSpace = 'RGB') {
     super(sim, 'Document');
     this.name = name;
+    if (!DocumentColorSpace[colorSpace]) throw new Error(`unknown colour space ${colorSpace}`);
+    this._colorSpace = DocumentColorSpace[colorSpace];
     // One US Letter artboard whose top-left corner is the document origin (until the host sets others).
     this._artboards = [new Artboard(sim, [0, 0, 612, -792], 'Artboard 1')];
     this._artboards[0]._parent = this;
@@ -212,6 +216,7 @@ export class Document extends Node {
     this._c = c;
   }
   get rulerUnits() { return this._rulerUnits; }
+  get documentColorSpace() { return this._colorSpace; }
   get artboards() {
     return collection('Artboards', () => this._artboards.slice(), {
       getActiveArtboardIndex: () => this._activeArtboard,
