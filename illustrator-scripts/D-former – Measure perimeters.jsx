@@ -51,38 +51,60 @@
     return { paths: paths, skipped: skipped };
   }
 
-  if (app.documents.length === 0) {
-    alert("No document is open. Open a document and select the paths to measure.", TITLE);
-    return;
-  }
-  var doc = app.activeDocument;
-  var units = unitsOf(doc);
-  var found = selectedPaths(doc);
-  if (found.paths.length === 0) {
-    alert("Select one or more paths first." + (found.skipped.length ? "\nNot paths: " + found.skipped.join(", ") + "." : ""), TITLE);
-    return;
-  }
-  /** @param {number} points @returns {string} */
-  function show(points) {
-    return (points * units.perPoint).toFixed(units.digits) + " " + units.name;
-  }
-  var lines = [];
-  var min = Infinity, max = -Infinity, closedCount = 0;
-  for (var i = 0; i < found.paths.length; i++) {
-    var p = found.paths[i];
-    var len = p.length;
-    lines.push((p.name ? p.name : "Path " + (i + 1)) + ": " + show(len) + (p.closed ? "" : " (open path)"));
-    if (p.closed) {
-      closedCount++;
-      if (len < min) min = len;
-      if (len > max) max = len;
+  /**
+   * Run fn in DOCUMENTCOORDINATESYSTEM and put the student's app.coordinateSystem back afterwards,
+   * also when fn throws. The setting is global and other scripts often leave it on
+   * ARTBOARDCOORDINATESYSTEM (positions relative to the active artboard).
+   * @param {function(): void} fn
+   */
+  function inDocumentCoordinates(fn) {
+    /** @type {*} */
+    var saved = null;
+    if (app.documents.length > 0 && app.coordinateSystem != CoordinateSystem.DOCUMENTCOORDINATESYSTEM) {
+      saved = app.coordinateSystem;
+      app.coordinateSystem = CoordinateSystem.DOCUMENTCOORDINATESYSTEM;
+    }
+    try {
+      fn();
+    } finally {
+      if (saved !== null) app.coordinateSystem = saved;
     }
   }
-  if (closedCount >= 2) {
-    var diff = max - min;
-    if (diff <= 1e-6 * max) lines.push("The closed outlines have equal perimeters (difference " + show(diff) + ").");
-    else lines.push("Difference: " + show(diff) + " (" + (100 * diff / max).toFixed(3) + " %). Run \"D-former \u2013 Normalize perimeters\" to make them equal.");
-  }
-  if (found.skipped.length) lines.push("Skipped (not paths): " + found.skipped.join(", ") + ".");
-  alert(lines.join("\n"), TITLE);
+
+  inDocumentCoordinates(function () {
+    if (app.documents.length === 0) {
+      alert("No document is open. Open a document and select the paths to measure.", TITLE);
+      return;
+    }
+    var doc = app.activeDocument;
+    var units = unitsOf(doc);
+    var found = selectedPaths(doc);
+    if (found.paths.length === 0) {
+      alert("Select one or more paths first." + (found.skipped.length ? "\nNot paths: " + found.skipped.join(", ") + "." : ""), TITLE);
+      return;
+    }
+    /** @param {number} points @returns {string} */
+    function show(points) {
+      return (points * units.perPoint).toFixed(units.digits) + " " + units.name;
+    }
+    var lines = [];
+    var min = Infinity, max = -Infinity, closedCount = 0;
+    for (var i = 0; i < found.paths.length; i++) {
+      var p = found.paths[i];
+      var len = p.length;
+      lines.push((p.name ? p.name : "Path " + (i + 1)) + ": " + show(len) + (p.closed ? "" : " (open path)"));
+      if (p.closed) {
+        closedCount++;
+        if (len < min) min = len;
+        if (len > max) max = len;
+      }
+    }
+    if (closedCount >= 2) {
+      var diff = max - min;
+      if (diff <= 1e-6 * max) lines.push("The closed outlines have equal perimeters (difference " + show(diff) + ").");
+      else lines.push("Difference: " + show(diff) + " (" + (100 * diff / max).toFixed(3) + " %). Run \"D-former \u2013 Normalize perimeters\" to make them equal.");
+    }
+    if (found.skipped.length) lines.push("Skipped (not paths): " + found.skipped.join(", ") + ".");
+    alert(lines.join("\n"), TITLE);
+  });
 })();

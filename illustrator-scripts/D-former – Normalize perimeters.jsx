@@ -86,75 +86,97 @@
     return { target: t ? t.index : 0, exact: exact.text, pivot: p ? p.index : 0 };
   }
 
-  if (app.documents.length === 0) {
-    alert("No document is open. Open a document and select the outlines to normalize.", TITLE);
-    return;
+  /**
+   * Run fn in DOCUMENTCOORDINATESYSTEM and put the student's app.coordinateSystem back afterwards,
+   * also when fn throws. The setting is global and other scripts often leave it on
+   * ARTBOARDCOORDINATESYSTEM (positions relative to the active artboard).
+   * @param {function(): void} fn
+   */
+  function inDocumentCoordinates(fn) {
+    /** @type {*} */
+    var saved = null;
+    if (app.documents.length > 0 && app.coordinateSystem != CoordinateSystem.DOCUMENTCOORDINATESYSTEM) {
+      saved = app.coordinateSystem;
+      app.coordinateSystem = CoordinateSystem.DOCUMENTCOORDINATESYSTEM;
+    }
+    try {
+      fn();
+    } finally {
+      if (saved !== null) app.coordinateSystem = saved;
+    }
   }
-  var doc = app.activeDocument;
-  var units = unitsOf(doc);
-  var found = selectedPaths(doc);
-  var paths = found.paths;
-  if (paths.length < 2) {
-    alert("Select at least two closed paths (found " + paths.length + ")." +
-      (found.skipped.length ? "\nNot usable: " + found.skipped.join(", ") + "." : ""), TITLE);
-    return;
-  }
-  var lengths = [];
-  for (var i = 0; i < paths.length; i++) {
-    var label = paths[i].name ? "\"" + paths[i].name + "\"" : "Path " + (i + 1);
-    if (!paths[i].closed) {
-      alert(label + " is an open path. A D-form needs closed outlines: close it (Object > Path > Join) or deselect it.", TITLE);
+
+  inDocumentCoordinates(function () {
+    if (app.documents.length === 0) {
+      alert("No document is open. Open a document and select the outlines to normalize.", TITLE);
       return;
     }
-    var len = paths[i].length;
-    if (!(len > 0) || !isFinite(len)) {
-      alert(label + " has no length to scale (" + len + " pt).", TITLE);
+    var doc = app.activeDocument;
+    var units = unitsOf(doc);
+    var found = selectedPaths(doc);
+    var paths = found.paths;
+    if (paths.length < 2) {
+      alert("Select at least two closed paths (found " + paths.length + ")." +
+        (found.skipped.length ? "\nNot usable: " + found.skipped.join(", ") + "." : ""), TITLE);
       return;
     }
-    lengths.push(len);
-  }
-  var sum = 0, min = Infinity, max = -Infinity;
-  for (i = 0; i < lengths.length; i++) {
-    sum += lengths[i];
-    if (lengths[i] < min) min = lengths[i];
-    if (lengths[i] > max) max = lengths[i];
-  }
-  var choice = ask(units.name, (max * units.perPoint).toFixed(units.digits));
-  if (choice === null) return;
-  var target;
-  if (choice.target === 0) target = max;
-  else if (choice.target === 1) target = min;
-  else if (choice.target === 2) target = sum / lengths.length;
-  else if (choice.target === 3) target = lengths[0];
-  else {
-    var typed = Number(String(choice.exact).replace(/^\s+|\s+$/g, "").replace(",", "."));
-    if (!(typed > 0) || !isFinite(typed)) {
-      alert("Enter an exact length greater than 0 in " + units.name + " (got \"" + choice.exact + "\"). Nothing was changed.", TITLE);
-      return;
+    var lengths = [];
+    for (var i = 0; i < paths.length; i++) {
+      var label = paths[i].name ? "\"" + paths[i].name + "\"" : "Path " + (i + 1);
+      if (!paths[i].closed) {
+        alert(label + " is an open path. A D-form needs closed outlines: close it (Object > Path > Join) or deselect it.", TITLE);
+        return;
+      }
+      var len = paths[i].length;
+      if (!(len > 0) || !isFinite(len)) {
+        alert(label + " has no length to scale (" + len + " pt).", TITLE);
+        return;
+      }
+      lengths.push(len);
     }
-    target = typed / units.perPoint;
-  }
-  var factors = [];
-  for (i = 0; i < paths.length; i++) {
-    var f = target / lengths[i];
-    if (!(f > 0) || !isFinite(f) || f > 1e4 || f < 1e-4) {
-      alert("Scaling " + (paths[i].name ? "\"" + paths[i].name + "\"" : "Path " + (i + 1)) + " by " + f +
-        " is out of range; choose another target. Nothing was changed.", TITLE);
-      return;
+    var sum = 0, min = Infinity, max = -Infinity;
+    for (i = 0; i < lengths.length; i++) {
+      sum += lengths[i];
+      if (lengths[i] < min) min = lengths[i];
+      if (lengths[i] > max) max = lengths[i];
     }
-    factors.push(f);
-  }
-  var pivot = PIVOT_VALUES[choice.pivot];
-  /** @param {number} points @returns {string} */
-  function show(points) {
-    return (points * units.perPoint).toFixed(units.digits) + " " + units.name;
-  }
-  var lines = ["Target perimeter: " + show(target)];
-  for (i = 0; i < paths.length; i++) {
-    var pct = 100 * factors[i];
-    paths[i].resize(pct, pct, true, true, true, true, 100, pivot);
-    lines.push((paths[i].name ? paths[i].name : "Path " + (i + 1)) + ": " + show(lengths[i]) + " \u2192 " + show(paths[i].length) +
-      " (scaled " + pct.toFixed(4) + " %)");
-  }
-  alert(lines.join("\n"), TITLE);
+    var choice = ask(units.name, (max * units.perPoint).toFixed(units.digits));
+    if (choice === null) return;
+    var target;
+    if (choice.target === 0) target = max;
+    else if (choice.target === 1) target = min;
+    else if (choice.target === 2) target = sum / lengths.length;
+    else if (choice.target === 3) target = lengths[0];
+    else {
+      var typed = Number(String(choice.exact).replace(/^\s+|\s+$/g, "").replace(",", "."));
+      if (!(typed > 0) || !isFinite(typed)) {
+        alert("Enter an exact length greater than 0 in " + units.name + " (got \"" + choice.exact + "\"). Nothing was changed.", TITLE);
+        return;
+      }
+      target = typed / units.perPoint;
+    }
+    var factors = [];
+    for (i = 0; i < paths.length; i++) {
+      var f = target / lengths[i];
+      if (!(f > 0) || !isFinite(f) || f > 1e4 || f < 1e-4) {
+        alert("Scaling " + (paths[i].name ? "\"" + paths[i].name + "\"" : "Path " + (i + 1)) + " by " + f +
+          " is out of range; choose another target. Nothing was changed.", TITLE);
+        return;
+      }
+      factors.push(f);
+    }
+    var pivot = PIVOT_VALUES[choice.pivot];
+    /** @param {number} points @returns {string} */
+    function show(points) {
+      return (points * units.perPoint).toFixed(units.digits) + " " + units.name;
+    }
+    var lines = ["Target perimeter: " + show(target)];
+    for (i = 0; i < paths.length; i++) {
+      var pct = 100 * factors[i];
+      paths[i].resize(pct, pct, true, true, true, true, 100, pivot);
+      lines.push((paths[i].name ? paths[i].name : "Path " + (i + 1)) + ": " + show(lengths[i]) + " \u2192 " + show(paths[i].length) +
+        " (scaled " + pct.toFixed(4) + " %)");
+    }
+    alert(lines.join("\n"), TITLE);
+  });
 })();

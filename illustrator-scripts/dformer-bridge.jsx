@@ -2,7 +2,7 @@
  * D-former document bridge for Adobe Illustrator (ExtendScript, strict ES3).
  * The CEP panel calls the dformer_* functions through CSInterface.evalScript; each returns a JSON
  * string and never throws. Contract and selection rules: BRIDGE.md next to this file.
- * Coordinates are Illustrator scripting coordinates: points, y axis up.
+ * Coordinates are Illustrator scripting coordinates in DOCUMENTCOORDINATESYSTEM: points, y axis up.
  */
 
 // ---------------------------------------------------------------------------------------------
@@ -185,21 +185,38 @@ function dformer_fail(message) {
 
 /**
  * Run body and turn its result or any thrown value into the bridge's JSON answer.
+ * Coordinates: app.coordinateSystem is one global setting that other scripts often leave on
+ * ARTBOARDCOORDINATESYSTEM, where positions are relative to whichever artboard is active. Every
+ * entry point runs in DOCUMENTCOORDINATESYSTEM, so that what is read on one artboard is written back
+ * to the same place after the student clicks another one, and restores the previous value afterwards
+ * (the finally also runs when body throws).
  * @param {function(): Object} body @returns {string}
  */
 function dformer_run(body) {
+  var out;
+  /** @type {*} */
+  var saved = null;
   try {
+    if (app.documents.length > 0 && app.coordinateSystem != CoordinateSystem.DOCUMENTCOORDINATESYSTEM) {
+      saved = app.coordinateSystem;
+      app.coordinateSystem = CoordinateSystem.DOCUMENTCOORDINATESYSTEM;
+    }
     var r = body();
     r.ok = true;
-    return dformer_stringify(r);
+    out = dformer_stringify(r);
   } catch (e) {
     var err = /** @type {*} */ (e);
     var msg;
     if (err && typeof err.dformer === "string") msg = err.dformer;
     else msg = "Illustrator reported an error: " + (err && err.message ? err.message : String(err)) +
       (err && err.line ? " (dformer-bridge.jsx line " + err.line + ")" : "");
-    return dformer_stringify({ ok: false, error: msg });
+    out = dformer_stringify({ ok: false, error: msg });
+  } finally {
+    if (saved !== null) {
+      try { app.coordinateSystem = saved; } catch (e2) { /* the answer matters more than the setting */ }
+    }
   }
+  return out;
 }
 
 /** @returns {Document} */
@@ -440,7 +457,7 @@ function dformer_units() {
   return dformer_run(function () {
     var doc = dformer_doc();
     var u = dformer_unitsOf(doc);
-    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, rulerUnits: u.rulerUnits };
+    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, rulerUnits: u.rulerUnits, colorMode: dformer_isCmyk(doc) ? "CMYK" : "RGB" };
   });
 }
 
@@ -450,7 +467,8 @@ function dformer_selectionKey() {
     if (app.documents.length === 0) return { key: "" };
     var doc = app.activeDocument;
     var c = dformer_collect(doc);
-    var parts = [doc.name, String(doc.rulerUnits), String(c.skipped.length)];
+    // Colour mode too: switching it (File > Document Color Mode) changes what the panel tells the student.
+    var parts = [doc.name, String(doc.rulerUnits), dformer_isCmyk(doc) ? "CMYK" : "RGB", String(c.skipped.length)];
     for (var i = 0; i < c.paths.length; i++) {
       var p = c.paths[i].item;
       var sel = [];
@@ -488,7 +506,7 @@ function dformer_selection() {
         path: r.path, selectedAnchors: r.selectedAnchors, allSelected: r.allSelected, length: p.length
       });
     }
-    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, items: items, skipped: c.skipped };
+    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, colorMode: dformer_isCmyk(doc) ? "CMYK" : "RGB", items: items, skipped: c.skipped };
   });
 }
 
@@ -651,6 +669,21 @@ function dformer_plan(doc, req) {
     pieces.push(piece);
   }
 
+  // Colours: the layer colours are the exact RGB values laser software matches cut/score/engrave by.
+  // In a CMYK document Illustrator translates an RGBColor into CMYK inks (CMYKColor in the Scripting
+  // Reference: the translation "can lose information"), and no CMYKColor comes back out as exactly
+  // 255,0,0 either; only the student can change the mode (documentColorSpace is read-only).
+  var colored = [];
+  for (var rc = 0; rc < roles.length; rc++) {
+    var CL = layers[roles[rc]];
+    if (CL.needed) colored.push(CL.name + " " + CL.color.join(","));
+  }
+  if (colored.length && dformer_isCmyk(doc)) {
+    dformer_fail("This document uses CMYK colour (a Print document): Illustrator would turn the laser colours (" +
+      colored.join("; ") + ") into CMYK ink values, and laser software that tells cut, score and engrave apart by " +
+      "exact RGB colour would no longer recognise them. Choose File > Document Color Mode > RGB Color, then Apply again. Nothing was changed.");
+  }
+
   // Target layers: existing ones must be writable.
   for (var t = 0; t < roles.length; t++) {
     var L = layers[roles[t]];
@@ -663,6 +696,11 @@ function dformer_plan(doc, req) {
     }
   }
   return { updates: updates, pieces: pieces, layers: layers, replace: req.replace !== false };
+}
+
+/** Document.documentColorSpace is CMYK (File > Document Color Mode). @param {Document} doc @returns {boolean} */
+function dformer_isCmyk(doc) {
+  return doc.documentColorSpace == DocumentColorSpace.CMYK;
 }
 
 /** @param {Array<number>} c @returns {RGBColor} */

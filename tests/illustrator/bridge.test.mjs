@@ -371,3 +371,109 @@ test('apply accepts a JSON string and reports malformed data', () => {
   assert.equal(r.ok, false);
   assert.match(r.error, /malformed data \(unexpected character at character 13\)/);
 });
+
+// app.coordinateSystem is one global setting that other scripts often leave on
+// ARTBOARDCOORDINATESYSTEM; coordinates are then relative to whichever artboard is active.
+const ARTBOARDS = [[1000, -300, 1600, -900], [-2000, 4000, -1400, 3400]];
+const diamond = (c, r) => ({ closed: true, points: [[c[0] - r, c[1]], [c[0], c[1] - r], [c[0] + r, c[1]], [c[0], c[1] + r]].map((a) => ({ anchor: a })) });
+
+test('coordinateSystem left on ARTBOARD: read on one artboard, Apply after switching artboards writes exactly on the piece; the setting is restored', () => {
+  const h = createHost({
+    units: 'mm', coordinateSystem: 'artboard', artboards: ARTBOARDS, activeArtboard: 0,
+    shapes: [{ name: 'A', rect: { top: -400, left: 1100, width: 200, height: 100 } }],
+  });
+  const ARTBOARD = h.context.CoordinateSystem.ARTBOARDCOORDINATESYSTEM;
+  const A = h.find('A');
+  const stored = A._points.map((p) => p._a.slice());   // document coordinates, as Illustrator keeps them
+  const key = call(h, 'dformer_selectionKey').key;
+  const sel = call(h, 'dformer_selection');
+  assert.equal(h.app.coordinateSystem, ARTBOARD, 'the student\'s setting is restored after reading');
+  const piece = sel.items[0];
+  assert.deepEqual(piece.path.points.map((q) => q.anchor), stored, 'read in document coordinates, whatever the active artboard');
+
+  h.doc.artboards.setActiveArtboardIndex(1);            // the student clicks another artboard before Apply
+  assert.equal(call(h, 'dformer_selectionKey').key, key, 'the fingerprint does not depend on the active artboard');
+  const corners = piece.path.points.map((q) => q.anchor);
+  const r = call(h, 'dformer_apply', {
+    document: sel.document,
+    updates: [{ id: piece.id, path: piece.path }],
+    pieces: [{ id: piece.id, name: 'piece A', holes: corners.map((c) => diamond(c, 2)),
+      labels: [{ text: '1', at: corners[0], angle: 0 }], marks: [{ closed: false, points: [{ anchor: corners[0] }, { anchor: corners[1] }] }] }],
+  });
+  assert.equal(r.ok, true, r.error);
+  assert.equal(h.app.coordinateSystem, ARTBOARD, 'the student\'s setting is restored after Apply');
+  assert.deepEqual(A._points.map((p) => p._a), stored, 'the in-place update leaves the piece where it is');
+  const group = h.doc.layers.getByName('Cut').groupItems.getByName('D-former piece A connectors');
+  corners.forEach((c, i) => {
+    const hole = group.pathItems.getByName(`hole ${i + 1}`);
+    assert.deepEqual(hole._points.map((p) => p._a), diamond(c, 2).points.map((q) => q.anchor), `hole ${i + 1} centred exactly on corner ${i}`);
+  });
+  const mark = h.doc.layers.getByName('Score').groupItems.getByName('D-former piece A marks').pathItems.getByName('start mark');
+  assert.deepEqual(mark._points.map((p) => p._a), [corners[0], corners[1]], 'start mark on the piece');
+  const label = h.doc.layers.getByName('Engrave').groupItems.getByName('D-former piece A labels').textFrames.getByName('label 1');
+  const c = label._center();
+  assert.ok(Math.hypot(c[0] - corners[0][0], c[1] - corners[0][1]) < 1e-9, `label centred on corner 0, got ${c}`);
+});
+
+test('the coordinate system is restored when a bridge call fails, and every entry point works in document coordinates', () => {
+  const h = createHost({
+    units: 'mm', coordinateSystem: 'artboard', artboards: ARTBOARDS, activeArtboard: 1,
+    shapes: [{ name: 'A', rect: { top: -400, left: 1100, width: 200, height: 100 } }],
+  });
+  const ARTBOARD = h.context.CoordinateSystem.ARTBOARDCOORDINATESYSTEM;
+  const DOCUMENT = h.context.CoordinateSystem.DOCUMENTCOORDINATESYSTEM;
+  const DOC = String(DOCUMENT);
+  for (const fn of ['dformer_info', 'dformer_units', 'dformer_selectionKey', 'dformer_selection']) {
+    h.sim.coordinateUses = {};
+    assert.equal(call(h, fn).ok, true, fn);
+    assert.equal(h.app.coordinateSystem, ARTBOARD, `${fn} restores the setting`);
+    assert.deepEqual(Object.keys(h.sim.coordinateUses).filter((k) => k !== DOC), [], `${fn} reads coordinates only in document coordinates`);
+  }
+  assert.ok(h.sim.coordinateUses[DOC] > 0, 'dformer_selection read coordinates');
+  // Failures: a refused request, malformed JSON, and Illustrator throwing midway (rolled back).
+  const sel = call(h, 'dformer_selection');
+  assert.match(call(h, 'dformer_apply', { updates: [{ id: 'u:nope', path: sel.items[0].path }] }).error, /no longer in the document/);
+  assert.equal(h.app.coordinateSystem, ARTBOARD, 'restored after a refused Apply');
+  assert.match(JSON.parse(h.evalScript('dformer_apply("{")')).error, /malformed data/);
+  assert.equal(h.app.coordinateSystem, ARTBOARD, 'restored after malformed data');
+  const before = h.snapshot();
+  h.sim.faults['pathItems.add'] = 2;
+  const r = call(h, 'dformer_apply', { pieces: [{ name: 'piece A', holes: [diamond([0, 0], 1), diamond([5, 5], 1)] }] });
+  assert.match(r.error, /simulated failure in pathItems\.add \(the changes were undone\)/);
+  assert.deepEqual(h.snapshot(), before);
+  assert.equal(h.app.coordinateSystem, ARTBOARD, 'restored after Illustrator threw midway');
+  const noDoc = createHost({ noDocument: true, coordinateSystem: 'artboard' });
+  assert.equal(call(noDoc, 'dformer_info').hasDocument, false);
+  assert.match(call(noDoc, 'dformer_selection').error, /No document is open/);
+  assert.equal(noDoc.app.coordinateSystem, noDoc.context.CoordinateSystem.ARTBOARDCOORDINATESYSTEM);
+});
+
+test('CMYK document: Apply that would write laser colours is refused with the menu to fix it; nothing changes', () => {
+  const h = twoShapes({ colorSpace: 'CMYK' });
+  const sel = call(h, 'dformer_selection');
+  assert.equal(sel.colorMode, 'CMYK');
+  assert.equal(call(h, 'dformer_units').colorMode, 'CMYK');
+  const key = call(h, 'dformer_selectionKey').key;
+  const before = h.snapshot();
+  const r = call(h, 'dformer_apply', payloadFor(sel));
+  assert.equal(r.ok, false, 'refused');
+  assert.match(r.error, /This document uses CMYK colour/);
+  assert.match(r.error, /Laser cut 255,0,0; Score 0,0,255; Engrave 0,0,0/, 'names the colours it would have written');
+  assert.match(r.error, /Choose File > Document Color Mode > RGB Color, then Apply again\. Nothing was changed\.$/);
+  assert.deepEqual(h.snapshot(), before, 'not even the in-place update is written');
+
+  // Reshaping paths writes no colour: allowed in a CMYK document.
+  const p = payloadFor(sel);
+  const only = call(h, 'dformer_apply', { document: p.document, updates: p.updates });
+  assert.equal(only.ok, true, only.error);
+  assert.equal(only.updated, 1);
+
+  // The student switches the document to RGB: the panel sees it, and Apply writes the exact RGB colours.
+  h.doc._colorSpace = h.context.DocumentColorSpace.RGB;
+  assert.notEqual(call(h, 'dformer_selectionKey').key, key, 'the fingerprint changes with the colour mode');
+  assert.equal(call(h, 'dformer_selection').colorMode, 'RGB');
+  assert.equal(call(h, 'dformer_apply', payloadFor(sel)).ok, true);
+  const hole = h.doc.layers.getByName('Laser cut').groupItems.getByName('D-former piece A connectors').pathItems.getByName('hole 1');
+  assert.equal(hole.strokeColor.typename, 'RGBColor');
+  assert.deepEqual([hole.strokeColor.red, hole.strokeColor.green, hole.strokeColor.blue], [255, 0, 0]);
+});

@@ -7,7 +7,7 @@ import path from 'node:path';
 import vm from 'node:vm';
 import { fileURLToPath } from 'node:url';
 import * as E from './sim/enums.mjs';
-import { Application, CompoundPathItem, GroupItem, NoColor, OtherItem, PathItem, RGBColor, Sim, TextFrame, ellipsePoints } from './sim/dom.mjs';
+import { Application, Artboard, CompoundPathItem, GroupItem, NoColor, OtherItem, PathItem, RGBColor, Sim, TextFrame, ellipsePoints } from './sim/dom.mjs';
 import { makeWindowClass } from './sim/scriptui.mjs';
 
 export const SCRIPTS_DIR = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../illustrator-scripts');
@@ -83,10 +83,20 @@ function addShape(sim, doc, s) {
  * @param {object[]} [o.shapes] {name, path|ellipse|rect|polygon, layer, group, selected, directSelect, selectedAnchors, kind, locked, hidden}
  * @param {(win) => 1|2} [o.dialog] responder for ScriptUI dialogs of standalone scripts
  * @param {string[]} [o.scripts] extra .jsx files (names in illustrator-scripts/) to load after the bridge
+ * @param {'RGB'|'CMYK'} [o.colorSpace='RGB'] Document.documentColorSpace (File > Document Color Mode)
+ * @param {number[][]} [o.artboards] artboard rects [left, top, right, bottom] in document coordinates
+ * @param {number} [o.activeArtboard=0] index of the active artboard
+ * @param {'document'|'artboard'} [o.coordinateSystem='document'] app.coordinateSystem when the scripts start
  */
 export function createHost(o = {}) {
-  const sim = new Sim({ uuid: o.uuid !== false, units: o.noDocument ? null : (o.units || 'mm'), float32: !!o.float32, name: o.document || 'Untitled-1.ai' });
+  const sim = new Sim({ uuid: o.uuid !== false, units: o.noDocument ? null : (o.units || 'mm'), float32: !!o.float32,
+    name: o.document || 'Untitled-1.ai', colorSpace: o.colorSpace || 'RGB' });
   const doc = sim.documents[0] || null;
+  if (doc && o.artboards) {
+    doc._artboards = o.artboards.map((r, i) => Object.assign(new Artboard(sim, r, `Artboard ${i + 1}`), { _parent: doc }));
+  }
+  if (doc && o.activeArtboard !== undefined) doc.artboards.setActiveArtboardIndex(o.activeArtboard);
+  if (o.coordinateSystem === 'artboard') sim.coordinateSystem = E.CoordinateSystem.ARTBOARDCOORDINATESYSTEM;
   for (const s of o.shapes || []) addShape(sim, doc, s);
   // The first created shape ends up at the bottom; fine for tests (they address shapes by name).
   const alerts = [];
@@ -97,6 +107,7 @@ export function createHost(o = {}) {
     app, RGBColor, NoColor,
     PointType: E.PointType, PathPointSelection: E.PathPointSelection, Transformation: E.Transformation,
     RulerUnits: E.RulerUnits, Justification: E.Justification,
+    CoordinateSystem: E.CoordinateSystem, DocumentColorSpace: E.DocumentColorSpace,
     alert: (m) => { alerts.push(String(m)); },
     $: { writeln: () => {} },
     Window: makeWindowClass((w) => (host.respond ? host.respond(w) : 2), dialogs),

@@ -165,3 +165,39 @@ test('text frames: anchor is settable, rotate() turns about the frame centre', (
   assert.equal(tf.rotation, 90);
   assert.notDeepEqual(tf.anchor, [10, 20], 'rotating about the centre moves the baseline origin');
 });
+
+test('app.coordinateSystem: ARTBOARD reads and writes relative to the active artboard\'s top-left corner, y still up', () => {
+  const h = createHost({ artboards: [[0, 0, 612, -792], [1000, -300, 1600, -900]], activeArtboard: 1,
+    shapes: [{ name: 'r', rect: { top: -400, left: 1100, width: 200, height: 100 } }] });
+  const { CoordinateSystem: CS } = h.context;
+  const r = h.find('r');
+  assert.equal(h.app.coordinateSystem, CS.DOCUMENTCOORDINATESYSTEM, 'default: document coordinates');
+  assert.deepEqual(r.geometricBounds, [1100, -400, 1300, -500]);
+  h.app.coordinateSystem = CS.ARTBOARDCOORDINATESYSTEM;
+  assert.deepEqual(r.geometricBounds, [100, -100, 300, -200], 'relative to artboard 2\'s top-left [1000, -300]');
+  assert.deepEqual(r.position, [100, -100]);
+  assert.deepEqual(r.pathPoints[0].anchor, [100, -100]);
+  assert.deepEqual(h.doc.artboards[1].artboardRect, [0, 0, 600, -600]);
+  h.doc.artboards.setActiveArtboardIndex(0);
+  assert.deepEqual(r.pathPoints[0].anchor, [1100, -400], 'same point, read against artboard 1 (at the document origin)');
+  h.doc.artboards.setActiveArtboardIndex(1);
+  r.pathPoints[0].anchor = [0, 0];
+  assert.deepEqual(r._points[0]._a, [1000, -300], 'a write lands at the active artboard\'s corner');
+  const t = h.doc.textFrames.add();
+  t.anchor = [10, -10];
+  assert.deepEqual(t._anchor, [1010, -310]);
+  const e = h.doc.pathItems.rectangle(-10, 10, 5, 5);
+  assert.deepEqual(e._points[0]._a, [1010, -310], 'rectangle(top, left, …) in the current system');
+  h.app.coordinateSystem = 0;
+  assert.equal(h.app.coordinateSystem, CS.DOCUMENTCOORDINATESYSTEM, 'numbers are accepted like ExtendScript enumerators');
+  assert.deepEqual(r.pathPoints[0].anchor, [1000, -300]);
+  assert.throws(() => { h.app.coordinateSystem = 7; }, /CoordinateSystem/);
+  assert.throws(() => h.doc.artboards.setActiveArtboardIndex(2), /No such element/);
+});
+
+test('Document.documentColorSpace is read-only: RGB by default, CMYK when the host says so', () => {
+  assert.equal(String(createHost().doc.documentColorSpace), 'DocumentColorSpace.RGB');
+  const h = createHost({ colorSpace: 'CMYK' });
+  assert.equal(h.doc.documentColorSpace, h.context.DocumentColorSpace.CMYK);
+  assert.throws(() => { h.doc.documentColorSpace = h.context.DocumentColorSpace.RGB; });
+});

@@ -105,7 +105,7 @@ test('both File > Scripts scripts carry identical unit and selection helpers', a
     const end = src.indexOf('\n  }\n', start);
     return src.slice(start, end);
   };
-  for (const name of ['unitsOf', 'selectedPaths']) {
+  for (const name of ['unitsOf', 'selectedPaths', 'inDocumentCoordinates']) {
     assert.equal(helper(read(NORMALIZE), name), helper(read(MEASURE), name), `${name} differs between the two scripts`);
   }
 });
@@ -128,4 +128,32 @@ test('Measure and Normalize leave hidden or locked art inside a selected group a
   assert.deepEqual([referenceLengthOf(ghost), referenceLengthOf(pinned)], before, 'hidden and locked paths unchanged');
   const want = Math.max(...lengths);
   for (const n of ['A', 'B', 'C']) assert.ok(relErr(referenceLengthOf(h.find(n)), want) < 1e-9, `${n} scaled to the largest visible perimeter`);
+});
+
+test('Measure and Normalize work in document coordinates and restore the student\'s app.coordinateSystem on every exit', () => {
+  const artboardHost = () => createHost({ units: 'mm', shapes: shapes(), coordinateSystem: 'artboard', artboards: [[500, -200, 900, -600]] });
+  const ARTBOARD = (h) => h.context.CoordinateSystem.ARTBOARDCOORDINATESYSTEM;
+  const DOC = 'CoordinateSystem.DOCUMENTCOORDINATESYSTEM';
+  const m = artboardHost();
+  assert.match(m.runScript(MEASURE)[0], /^A: 134\.991 mm$/m);
+  assert.equal(m.app.coordinateSystem, ARTBOARD(m), 'Measure restores the setting');
+
+  const h = artboardHost();
+  const lengths = ['A', 'B', 'C'].map((n) => referenceLengthOf(h.find(n)));
+  h.sim.coordinateUses = {};
+  assert.match(h.runScript(NORMALIZE, answer(0))[0], /^Target perimeter: /);
+  assert.equal(h.app.coordinateSystem, ARTBOARD(h), 'Normalize restores the setting');
+  assert.deepEqual(Object.keys(h.sim.coordinateUses), [DOC], 'Normalize scales in document coordinates');
+  for (const n of ['A', 'B', 'C']) assert.ok(relErr(referenceLengthOf(h.find(n)), Math.max(...lengths)) < 1e-9, n);
+
+  const c = artboardHost();
+  assert.deepEqual(c.runScript(NORMALIZE, answer(0, '', 0, false)), [], 'Cancel');
+  assert.equal(c.app.coordinateSystem, ARTBOARD(c), 'restored after Cancel');
+  const t = artboardHost();
+  t.sim.faults.resize = 2;
+  assert.throws(() => t.runScript(NORMALIZE, answer(0)), /simulated failure in resize/);
+  assert.equal(t.app.coordinateSystem, ARTBOARD(t), 'restored when Illustrator throws');
+  const none = createHost({ noDocument: true, coordinateSystem: 'artboard' });
+  assert.match(none.runScript(MEASURE)[0], /No document is open/);
+  assert.equal(none.app.coordinateSystem, ARTBOARD(none));
 });

@@ -126,6 +126,29 @@ test('Illustrator refuses the write (layer locked after reading): message shown,
   await page.close();
 });
 
+test('CMYK (Print) document: the panel says to switch to RGB, Apply is refused with the menu path, document untouched', async () => {
+  const { page, host } = await openPanel(panel.browser, panel.url, { ...TWO_SHAPES, colorSpace: 'CMYK' });
+  await waitReady(page);
+  assert.equal(await page.evaluate(() => document.body.dataset.state), 'ready');
+  assert.match(await page.textContent('#selection-summary'), /CMYK document: switch to File > Document Color Mode > RGB Color before Apply/);
+  const snap = JSON.stringify(host.snapshot());
+  await page.click('#apply-btn');
+  await page.waitForFunction(() => document.body.dataset.applied);
+  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'error');
+  const message = await page.textContent('#status');
+  assert.match(message, /CMYK colour.*File > Document Color Mode > RGB Color, then Apply again\. Nothing was changed\./, `status: "${message}"`);
+  assert.equal(JSON.stringify(host.snapshot()), snap, 'the document must be unchanged');
+
+  // The student switches the mode: the poll notices (the fingerprint includes it), the note goes, Apply writes exact RGB.
+  host.doc._colorSpace = host.context.DocumentColorSpace.RGB;
+  await page.waitForFunction(() => !/CMYK/.test(document.querySelector('#selection-summary').textContent));
+  await page.evaluate(() => { delete document.body.dataset.applied; });
+  await applyOk(page);
+  const holes = items(host.snapshot()[0]).filter((i) => /^hole \d+$/.test(i.name));
+  assert.ok(holes.length > 0 && holes.every((h) => h.strokeColor.rgb.join() === '255,0,0'), 'holes in exact RGB red');
+  await page.close();
+});
+
 test('theme follows Illustrator brightness (dark → light on ThemeColorChanged); screenshots', async () => {
   const { page } = await openPanel(panel.browser, panel.url, TWO_SHAPES, { skin: SKINS.dark });
   await waitReady(page);

@@ -10,7 +10,7 @@
  *   apply(plan)              Promise<{ ok, error?, message }>; plan = { document, updates, pieces, layers, labelSize }
  *   theme()                  { background: [r,g,b], dark: bool }
  *   saveText(name, text, type)  Promise<{ ok, message }>: save an export (OBJ, STL)
- * Selection = { ok, error?, document, units, pieces: [{ id, name, path, selectedAnchors, allSelected }], skipped } */
+ * Selection = { ok, error?, document, units, pieces: [{ id, name, path, selectedAnchors, allSelected }], skipped, note } */
 (function (DF) {
   'use strict';
   var POLL_MS = 400;
@@ -60,6 +60,9 @@
             return { id: it.id, name: it.name, path: it.path, selectedAnchors: it.selectedAnchors || [], allSelected: !!it.allSelected };
           }),
           skipped: r.skipped || [],
+          // A Print (CMYK) document would change the laser colours; the bridge refuses Apply there
+          // (illustrator-scripts/BRIDGE.md, "Colour mode"), so say so before the student presses it.
+          note: r.colorMode === 'CMYK' ? 'CMYK document: switch to File > Document Color Mode > RGB Color before Apply, so the laser colours stay exact' : '',
         };
       });
     }

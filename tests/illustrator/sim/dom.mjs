@@ -10,9 +10,21 @@
 // - PathItem.length is the true Bézier arc length (dense Gauss–Legendre quadrature, see bezier.mjs);
 // - resize(sx%, sy%, …, changeLineWidths%, scaleAbout) scales about a point of the geometric bounds;
 // - locked or hidden items and locked or hidden layers cannot be modified ("Target layer cannot be modified");
-// - getByName and out-of-range indices throw "No such element"; so does getPageItemFromUuid on a miss.
+// - getByName and out-of-range indices throw "No such element"; so does getPageItemFromUuid on a miss;
+// - app.coordinateSystem (Application.coordinateSystem: "the coordinate system currently in use, document
+//   or artboard"; scripting-constants CoordinateSystem) is one global setting of the application, not of a
+//   document. With DOCUMENTCOORDINATESYSTEM (the default) coordinates are document coordinates (how the
+//   simulator stores them). With ARTBOARDCOORDINATESYSTEM every coordinate a script reads or writes
+//   (PathPoint anchor/leftDirection/rightDirection, setEntirePath, ellipse/rectangle top-left,
+//   geometricBounds, position, left, top, TextFrame.anchor, Artboard.artboardRect, the DOCUMENTORIGIN
+//   pivot of resize) is relative to the top-left corner of the ACTIVE artboard (the guide's "Page-item
+//   positioning": the artboard's coordinate origin is its top-left corner; Artboard.rulerOrigin is taken
+//   as its default [0,0]). Simulator choice: the y axis stays up in both systems (geometricBounds top >
+//   bottom), as scripts observe; only the origin moves. Lengths and other relative values do not change;
+//   - Document.documentColorSpace is read-only (RGB unless the host says CMYK); colours are stored as
+//   assigned (Illustrator's translation of RGB colours in a CMYK document is not simulated).
 import { cubicBounds, cubicLength, segmentsOf } from './bezier.mjs';
-import { PathPointSelection, PointType, RulerUnits, Transformation, Justification, UNIT_MEMBERS } from './enums.mjs';
+import { CoordinateSystem, DocumentColorSpace, PathPointSelection, PointType, RulerUnits, Transformation, Justification, UNIT_MEMBERS } from './enums.mjs';
 
 const NO_SUCH = () => new Error('No such element');
 const LOCKED = () => new Error('Target layer cannot be modified');
@@ -53,14 +65,34 @@ function isPair(v) {
 }
 
 export class Sim {
-  constructor({ uuid = true, units = 'mm', float32 = false, name = 'Untitled-1.ai' } = {}) {
+  constructor({ uuid = true, units = 'mm', float32 = false, name = 'Untitled-1.ai', colorSpace = 'RGB' } = {}) {
     this.hasUuid = uuid;
     this.float32 = float32;
     this.nextUuid = 1;
     this.faults = {};              // name → remaining count before a thrown fault (tests)
     this.calls = {};
     this.documents = [];
-    if (units !== null) this.documents.push(new Document(this, name, units));
+    this.coordinateSystem = CoordinateSystem.DOCUMENTCOORDINATESYSTEM;
+    this.coordinateUses = {};      // "CoordinateSystem.X" → how many coordinates were read or written in it (tests)
+    if (units !== null) this.documents.push(new Document(this, name, units, colorSpace));
+  }
+  /** Where the current coordinate system's [0,0] is, in document coordinates. */
+  origin(doc) {
+    const k = String(this.coordinateSystem);
+    this.coordinateUses[k] = (this.coordinateUses[k] || 0) + 1;
+    if (this.coordinateSystem !== CoordinateSystem.ARTBOARDCOORDINATESYSTEM || !doc) return [0, 0];
+    const r = doc._artboards[doc._activeArtboard].rect;
+    return [r[0], r[1]];
+  }
+  /** A stored (document) point as the script sees it in the current coordinate system. */
+  out(doc, p) {
+    const o = this.origin(doc);
+    return o[0] === 0 && o[1] === 0 ? p.slice() : [this.num(p[0] - o[0]), this.num(p[1] - o[1])];
+  }
+  /** A point the script wrote, in the current coordinate system, as stored document coordinates. */
+  in(doc, v, what) {
+    const q = this.pair(v, what), o = this.origin(doc);
+    return o[0] === 0 && o[1] === 0 ? q : [this.num(q[0] + o[0]), this.num(q[1] + o[1])];
   }
   /** Count a DOM call and throw if a fault was injected for it. */
   hit(what) {
@@ -102,12 +134,14 @@ function containerCollections(owner, itemsHost) {
       add: addTo(() => new PathItem(owner.sim), 'pathItems.add'),
       ellipse: (top = 100, left = 100, width = 50, height = 100, reversed = false) => {
         const p = addTo(() => new PathItem(owner.sim), 'pathItems.ellipse')();
+        [left, top] = owner.sim.in(owner.document, [left, top], 'ellipse');
         p._setPoints(ellipsePoints(top, left, width, height, reversed));
         p.closed = true;
         return p;
       },
       rectangle: (top, left, width, height, reversed = false) => {
         const p = addTo(() => new PathItem(owner.sim), 'pathItems.rectangle')();
+        [left, top] = owner.sim.in(owner.document, [left, top], 'rectangle');
         const pts = [[left, top], [left, top - height], [left + width, top - height], [left + width, top]];
         if (reversed) pts.reverse();
         p._setPoints(pts.map((a) => ({ anchor: a, left: a, right: a })));
@@ -141,10 +175,30 @@ export function ellipsePoints(top, left, width, height, reversed) {
   return pts;
 }
 
+export class Artboard extends Node {
+  constructor(sim, rect, name) { super(sim, 'Artboard'); this.rect = rect.slice(); this.name = name; }
+  /** [left, top, right, bottom] in the current coordinate system. */
+  get artboardRect() {
+    const a = this.sim.out(this._parent, [this.rect[0], this.rect[1]]), b = this.sim.out(this._parent, [this.rect[2], this.rect[3]]);
+    return [a[0], a[1], b[0], b[1]];
+  }
+  set artboardRect(v) {
+    if (!v || v.length !== 4) throw new Error('artboardRect: expected [left, top, right, bottom]');
+    const a = this.sim.in(this._parent, [v[0], v[1]], 'artboardRect'), b = this.sim.in(this._parent, [v[2], v[3]], 'artboardRect');
+    this.rect = [a[0], a[1], b[0], b[1]];
+  }
+}
+
 export class Document extends Node {
-  constructor(sim, name, units) {
+  constructor(sim, name, units, colorSpace = 'RGB') {
     super(sim, 'Document');
     this.name = name;
+    if (!DocumentColorSpace[colorSpace]) throw new Error(`unknown colour space ${colorSpace}`);
+    this._colorSpace = DocumentColorSpace[colorSpace];
+    // One US Letter artboard whose top-left corner is the document origin (until the host sets others).
+    this._artboards = [new Artboard(sim, [0, 0, 612, -792], 'Artboard 1')];
+    this._artboards[0]._parent = this;
+    this._activeArtboard = 0;
     const member = UNIT_MEMBERS[units] || units;
     if (!RulerUnits[member]) throw new Error(`unknown ruler units ${units}`);
     this._rulerUnits = RulerUnits[member];
@@ -162,6 +216,16 @@ export class Document extends Node {
     this._c = c;
   }
   get rulerUnits() { return this._rulerUnits; }
+  get documentColorSpace() { return this._colorSpace; }
+  get artboards() {
+    return collection('Artboards', () => this._artboards.slice(), {
+      getActiveArtboardIndex: () => this._activeArtboard,
+      setActiveArtboardIndex: (i) => {
+        if (!(i >= 0 && i < this._artboards.length)) throw NO_SUCH();
+        this._activeArtboard = i;
+      },
+    });
+  }
   get layers() {
     return collection('Layers', () => this._layers.slice(), {
       add: () => {
@@ -275,15 +339,16 @@ class PageItem extends Node {
     const l = this.layer;
     if (l) l.assertWritable();
   }
+  /** _bounds() ([minX, minY, maxX, maxY], document coordinates) as [left, top, right, bottom] in the current system. */
   get geometricBounds() {
-    const b = this._bounds();
-    return [b[0], b[3], b[2], b[1]];
+    const b = this._bounds(), tl = this.sim.out(this.document, [b[0], b[3]]), br = this.sim.out(this.document, [b[2], b[1]]);
+    return [tl[0], tl[1], br[0], br[1]];
   }
   get width() { const b = this._bounds(); return b[2] - b[0]; }
   get height() { const b = this._bounds(); return b[3] - b[1]; }
-  get left() { return this._bounds()[0]; }
-  get top() { return this._bounds()[3]; }
-  get position() { const b = this._bounds(); return [b[0], b[3]]; }
+  get left() { return this.geometricBounds[0]; }
+  get top() { return this.geometricBounds[1]; }
+  get position() { const b = this.geometricBounds; return [b[0], b[1]]; }
   remove() {
     this.sim.hit(`${this._typename}.remove`);
     if (!this._parent) throw new Error('object has been removed');
@@ -302,9 +367,10 @@ class PageItem extends Node {
     this.sim.hit('resize');
     this.assertWritable();
     if (!Number.isFinite(scaleX) || !Number.isFinite(scaleY)) throw new Error('resize: scale must be a number');
-    const [l, t, r, b] = this.geometricBounds;
+    const [minX, minY, maxX, maxY] = this._bounds();
+    const [l, t, r, b] = [minX, maxY, maxX, minY];
     const ref = {
-      [Transformation.DOCUMENTORIGIN]: [0, 0], [Transformation.TOPLEFT]: [l, t], [Transformation.LEFT]: [l, (t + b) / 2],
+      [Transformation.DOCUMENTORIGIN]: this.sim.origin(this.document), [Transformation.TOPLEFT]: [l, t], [Transformation.LEFT]: [l, (t + b) / 2],
       [Transformation.BOTTOMLEFT]: [l, b], [Transformation.TOP]: [(l + r) / 2, t], [Transformation.CENTER]: [(l + r) / 2, (t + b) / 2],
       [Transformation.BOTTOM]: [(l + r) / 2, b], [Transformation.TOPRIGHT]: [r, t], [Transformation.RIGHT]: [r, (t + b) / 2],
       [Transformation.BOTTOMRIGHT]: [r, b],
@@ -325,12 +391,12 @@ export class PathPoint extends Node {
     this._type = PointType.CORNER;
     this._sel = PathPointSelection.NOSELECTION;
   }
-  _w(what, v) { this.sim.hit(`PathPoint.${what}`); this._parent.assertWritable(); return this.sim.pair(v, what); }
-  get anchor() { return this._a.slice(); }
+  _w(what, v) { this.sim.hit(`PathPoint.${what}`); this._parent.assertWritable(); return this.sim.in(this.document, v, what); }
+  get anchor() { return this.sim.out(this.document, this._a); }
   set anchor(v) { this._a = this._w('anchor', v); }
-  get leftDirection() { return this._l.slice(); }
+  get leftDirection() { return this.sim.out(this.document, this._l); }
   set leftDirection(v) { this._l = this._w('leftDirection', v); }
-  get rightDirection() { return this._r.slice(); }
+  get rightDirection() { return this.sim.out(this.document, this._r); }
   set rightDirection(v) { this._r = this._w('rightDirection', v); }
   get pointType() { return this._type; }
   set pointType(v) {
@@ -381,7 +447,7 @@ export class PathItem extends PageItem {
     this.assertWritable();
     const list = [];
     for (let i = 0; i < pts.length; i++) {
-      const a = this.sim.pair(pts[i], 'setEntirePath');
+      const a = this.sim.in(this.document, pts[i], 'setEntirePath');
       list.push({ anchor: a, left: a, right: a });
     }
     this._setPoints(list);
@@ -458,8 +524,8 @@ export class TextFrame extends PageItem {
       get contents() { return frame.contents; },
     };
   }
-  get anchor() { return this._anchor.slice(); }
-  set anchor(v) { this.sim.hit('TextFrame.anchor'); this.assertWritable(); this._anchor = this.sim.pair(v, 'anchor'); }
+  get anchor() { return this.sim.out(this.document, this._anchor); }
+  set anchor(v) { this.sim.hit('TextFrame.anchor'); this.assertWritable(); this._anchor = this.sim.in(this.document, v, 'anchor'); }
   /** Approximate visual centre: glyph box 0.6·size wide per character, cap height 0.7·size. */
   _center() {
     const size = this.textRange.characterAttributes.size, w = 0.6 * size * String(this.contents).length;
@@ -496,4 +562,11 @@ export class Application {
     return this.sim.documents[0];
   }
   get selection() { return this.activeDocument.selection; }
+  get coordinateSystem() { return this.sim.coordinateSystem; }
+  set coordinateSystem(v) {
+    const hit = Object.values(CoordinateSystem).find((m) => Number(m) === Number(v));
+    if (!hit) throw new Error('coordinateSystem: expected a CoordinateSystem');
+    this.sim.hit('app.coordinateSystem');
+    this.sim.coordinateSystem = hit;
+  }
 }

@@ -23,6 +23,9 @@ export const RulerUnits = enumeration('RulerUnits', {
   // Added in Illustrator 2023 (not in the 2022 typings); the bridge recognises them by name.
   FeetInches: 9, Meters: 10, Yards: 11, Feet: 12,
 });
+// Application.coordinateSystem (scripting-constants CoordinateSystem) and Document.documentColorSpace.
+export const CoordinateSystem = enumeration('CoordinateSystem', { DOCUMENTCOORDINATESYSTEM: 0, ARTBOARDCOORDINATESYSTEM: 1 });
+export const DocumentColorSpace = enumeration('DocumentColorSpace', { RGB: 1, CMYK: 2 });
 export const Justification = enumeration('Justification', {
   LEFT: 0, RIGHT: 1, CENTER: 2, FULLJUSTIFYLASTLINELEFT: 3, FULLJUSTIFYLASTLINERIGHT: 4,
   FULLJUSTIFYLASTLINECENTER: 5, FULLJUSTIFY: 6,
