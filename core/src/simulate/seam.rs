@@ -96,7 +96,13 @@ impl Glue {
         let mut u: Vec<f64> = (0..n).map(|k| k as f64 * h).collect();
         let mut snapped = vec![false; n];
         snapped[0] = true;
+        // Both pieces' corners at one seam point (a square's corner glued to a rectangle's) come
+        // out a few ulps apart: the same corner, which must not take two samples.
+        let same = 1e-6 * h;
         for &c in &self.corners {
+            if (0..n).any(|k| snapped[k] && (u[k] - c).abs() <= same) || total - c <= same {
+                continue;
+            }
             let near = (c / h).round() as usize;
             for k in [near, near + 1, near.wrapping_sub(1)] {
                 if k == 0 || k >= n || snapped[k] {
@@ -104,7 +110,7 @@ impl Glue {
                 }
                 let before = u[k - 1];
                 let after = if k + 1 < n { u[k + 1] } else { total };
-                if c > before && c < after && (c - k as f64 * h).abs() <= h {
+                if c - before > same && after - c > same && (c - k as f64 * h).abs() <= h {
                     u[k] = c;
                     snapped[k] = true;
                     break;
@@ -220,6 +226,29 @@ mod tests {
             let step = g.perimeter() / n as f64;
             let smooth = g.positions(n);
             assert!(smooth.iter().enumerate().all(|(k, &x)| x == k as f64 * step), "n = {n}: a smooth gluing moved samples");
+        }
+    }
+
+    /// Regression (Inkscape's 3D export at 16 seam vertices): a 40 × 20 rectangle, turned by 10°,
+    /// glued to a 30 × 30 square meets it corner to corner at a quarter of the seam; the two
+    /// corners came out 1e-14 apart, took two samples, and the zero-length seam edge made the
+    /// sample polygon impossible to triangulate.
+    #[test]
+    fn coinciding_corners_of_both_pieces_take_one_sample() {
+        let corners = |pts: &[(f64, f64)], piece| Contour::new(pts.iter().map(|&(x, y)| Knot::corner(Point::new(x, y))).collect(), piece).unwrap();
+        let rect = corners(&[(0.0, 0.0), (40.0, 0.0), (40.0, 20.0), (0.0, 20.0)], 0)
+            .transformed(kurbo::Affine::rotate(10f64.to_radians()).then_translate(kurbo::Vec2::new(22.04, 36.68)));
+        let square = corners(&[(110.0, 30.0), (110.0, 60.0), (140.0, 60.0), (140.0, 30.0)], 1);
+        let glue = Glue::new(&rect, &square, 0.0).unwrap();
+        for n in [16, 24, 32] {
+            let u = glue.positions(n);
+            let h = glue.perimeter() / n as f64;
+            let gap = (0..n).map(|k| if k + 1 < n { u[k + 1] - u[k] } else { glue.perimeter() - u[k] }).fold(f64::INFINITY, f64::min);
+            assert!(gap > 0.1 * h, "n = {n}: two samples {gap} apart: {u:?}");
+            let pieces = glue.sample(n);
+            for p in 0..2 {
+                assert!(crate::simulate::metric::ear_clip(&pieces.flat[p].pts).is_some(), "n = {n}: piece {p} cannot be triangulated");
+            }
         }
     }
 }
