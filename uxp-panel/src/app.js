@@ -389,8 +389,23 @@
     var inUnits = a / Math.pow(DF.units.PER_UNIT[unit], 2);
     return 'area ' + inUnits.toLocaleString('en-US', { maximumFractionDigits: inUnits < 100 ? 3 : 0 }) + ' ' + unit + '²';
   }
-  function set3dMessage(text, ok) {
+  /**
+   * The solver may stop without a form in which both pieces keep their flat shape (near-square
+   * rectangles on a circle, spiky outlines): what it drew is then only an approximation, often flat
+   * or folded, and its volume, area and mesh are not those of the real D-form. Says so plainly.
+   */
+  function setApproximate(st) {
+    var el = $('#warn3d');
+    var approx = !!st && !st.converged;
+    el.hidden = !approx;
+    el.textContent = approx ? '⚠ Approximate preview: the solver found no form in which both pieces keep their flat shape ' +
+      '(they stretch up to ' + (st.maxStrain * 100).toFixed(0) + ' % here). The real D-form will look different; the volume and area ' +
+      'are rough guesses, and OBJ/STL export this approximate shape (it may not be a clean closed solid).' : '';
+    document.body.dataset.approximate = approx ? 'yes' : '';
+  }
+  function set3dMessage(text, ok, st) {
     var el = $('#stats3d');
+    setApproximate(ok ? st : null);
     el.textContent = text;
     el.className = 'stats' + (ok ? '' : ' error-text');
     $('#export-obj').disabled = $('#export-stl').disabled = !ok;
@@ -434,7 +449,7 @@
       viewer.setMesh(mesh);
       var st = mesh.stats;
       set3dMessage(volumeText(st.volume) + ' · ' + areaText(st.area) + ' · strain ' + (st.maxStrain * 100).toFixed(2) + ' %' +
-        (st.converged ? '' : ' · not converged'), true);
+        (st.converged ? '' : ' · not converged'), true, st);
     }, function (e) {
       mesh = null;
       viewer.setMesh(null);
@@ -485,7 +500,8 @@
     });
   }
   function report3d(r) {
-    if (r && r.message) setStatus(r.message + ' Mesh in millimetres.', true);
+    var approx = mesh && mesh.stats && !mesh.stats.converged;
+    if (r && r.message) setStatus(r.message + ' Mesh in millimetres.' + (approx ? ' It is the approximate preview shape, not the real D-form.' : ''), true);
   }
 
   /** The outcome of Apply / exports: stays until the next change the user makes. */

@@ -1,0 +1,65 @@
+// When the solver cannot realize a D-form (a near-square rectangle on a circle), the 3D tab used to
+// show the flat or folded shape it stopped at with only a grey "· not converged" after the volume:
+// a student read "Volume 1.19 mm³" as the answer and exported it. Now a warning says the preview is
+// approximate. Checked independently: a D-form is made of the flat pieces without stretching, so the
+// surface area of the exported mesh must equal the flat pieces' area; when it does not, the preview is
+// not the real form and the warning must be shown; when it does, no warning.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { artifactPath, openApp, openSvgFiles, usePanelBrowser } from './support.mjs';
+
+const panel = usePanelBrowser();
+
+const svg = (shape) => `<svg xmlns="http://www.w3.org/2000/svg" width="300mm" height="150mm" viewBox="0 0 300 150">${shape}` +
+  `<circle cx="220" cy="75" r="${200 / (2 * Math.PI)}"/></svg>`;
+const CIRCLE_AREA = (200 * 200) / (4 * Math.PI); // mm², perimeter 200 mm
+
+function meshArea(objText) {
+  const v = [];
+  let area = 0;
+  for (const line of objText.split('\n')) {
+    const p = line.trim().split(/\s+/);
+    if (p[0] === 'v') v.push(p.slice(1, 4).map(Number));
+    if (p[0] === 'f') {
+      const [a, b, c] = p.slice(1, 4).map((x) => v[Number(x.split('/')[0]) - 1]);
+      const u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+      const w = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+      area += Math.hypot(u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]) / 2;
+    }
+  }
+  return area;
+}
+
+async function open3d(name, rect) {
+  const page = await openApp(panel);
+  await openSvgFiles(page, [[name, svg(rect)]]);
+  await page.click('.tabs button[data-view="3d"]');
+  await page.waitForFunction(() => document.body.dataset.solve && !document.body.dataset.solving, null, { timeout: 30000 });
+  assert.equal(await page.evaluate(() => document.body.dataset.solve), 'ok', await page.textContent('#stats3d'));
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('#export-obj')]);
+  return { page, area: meshArea(readFileSync(await dl.path(), 'utf8')) };
+}
+
+test('3D tab: a form the solver cannot realize is clearly marked approximate; a realized one is not', async () => {
+  // 50 × 50 mm square + circle, both 200 mm around: the solver stops at a flat, stretched shape.
+  const square = await open3d('square-circle.svg', '<rect x="45" y="50" width="50" height="50"/>');
+  const flat = 2500 + CIRCLE_AREA;
+  assert.ok(Math.abs(square.area - flat) > 0.01 * flat,
+    `precondition: this test needs a shape the solver cannot realize (mesh area ${square.area.toFixed(0)} vs flat ${flat.toFixed(0)} mm²)`);
+  const warn = square.page.locator('#warn3d');
+  assert.ok(await warn.isVisible(), 'the stretched, wrong-looking form must come with a visible warning');
+  assert.match(await warn.textContent(), /approximate/i);
+  assert.match(await warn.textContent(), /real D-form will look different/);
+  assert.match(await square.page.textContent('#status'), /approximate/i, 'the export message says what was exported');
+  await square.page.screenshot({ path: artifactPath('browser-3d-approximate.png') });
+  await square.page.close();
+
+  // 80 × 20 mm rectangle + circle: realized, its mesh area is the flat pieces' area; no warning.
+  const rect = await open3d('rect-circle.svg', '<rect x="30" y="65" width="80" height="20"/>');
+  const flat2 = 1600 + CIRCLE_AREA;
+  assert.ok(Math.abs(rect.area - flat2) < 0.005 * flat2, `mesh area ${rect.area} vs flat ${flat2}`);
+  assert.equal(await rect.page.locator('#warn3d').isVisible(), false, 'a realized form is not called approximate');
+  assert.doesNotMatch(await rect.page.textContent('#status'), /approximate/i);
+  await rect.page.close();
+});
