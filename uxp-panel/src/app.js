@@ -31,6 +31,8 @@
   var meshOffset = 0;
   var solving = false;
   var solveAgain = false;
+  var exportWanted = ''; // 'obj' / 'stl' clicked while a solve was running: written when it is done
+  var exportWhenSolved = null;
   var loadedSample = ''; // browser: the sample the loaded design came from ('' = opened files)
   var fieldErrors = {}; // field → why the value typed there is not used (shown instead of the design's message)
 
@@ -427,6 +429,10 @@
       return set3dMessage('This build of the geometry core has no simulate(): rebuild it to see the 3D form.', false);
     }
     if (!design || !design.ok) {
+      if (exportWanted) {
+        exportWanted = '';
+        setStatus('', true);
+      }
       viewer.setMesh(null);
       return set3dMessage(design && design.error ? errorText(design) : host.kind === 'browser' ? browserCountText(0) : 'Select two closed paths.', false);
     }
@@ -460,6 +466,11 @@
       if (solveAgain && view === '3d') {
         solveAgain = false;
         solve3d();
+      } else if (exportWanted) {
+        var kind = exportWanted;
+        exportWanted = '';
+        if (!solveAgain && !pending && document.body.dataset.solve === 'ok') exportWhenSolved(kind);
+        else setStatus('', true);
       }
     });
   }
@@ -492,12 +503,24 @@
     // Meshes are always written in millimetres, whatever unit the panel shows: STL has no unit and
     // slicers read it as mm; OBJ has none either and CAD/CAM tools assume mm (the header says mm).
     var toMm = 1 / DF.units.PER_UNIT.mm;
-    $('#export-obj').addEventListener('click', function () {
-      if (mesh) host.saveText('d-form-mm.obj', DF.view3d.toObj(mesh, toMm, 'mm'), 'model/obj').then(report3d, showError);
-    });
-    $('#export-stl').addEventListener('click', function () {
-      if (mesh) host.saveText('d-form-mm.stl', DF.view3d.toStl(mesh, toMm), 'model/stl').then(report3d, showError);
-    });
+    function exportNow(kind) {
+      if (!mesh) return;
+      if (kind === 'obj') host.saveText('d-form-mm.obj', DF.view3d.toObj(mesh, toMm, 'mm'), 'model/obj').then(report3d, showError);
+      else host.saveText('d-form-mm.stl', DF.view3d.toStl(mesh, toMm), 'model/stl').then(report3d, showError);
+    }
+    // While the form for the slider's position is still being solved, the mesh on hand is an
+    // earlier position's: export the one the slider shows as soon as it is there.
+    exportWhenSolved = exportNow;
+    function exportClicked(kind) {
+      if (solving || pending) {
+        exportWanted = kind;
+        setStatus('Exporting ' + kind.toUpperCase() + ' as soon as the form for this seam offset is solved…', true);
+        return;
+      }
+      exportNow(kind);
+    }
+    $('#export-obj').addEventListener('click', function () { exportClicked('obj'); });
+    $('#export-stl').addEventListener('click', function () { exportClicked('stl'); });
   }
   function report3d(r) {
     var approx = mesh && mesh.stats && !mesh.stats.converged;

@@ -1,0 +1,57 @@
+// Moving the seam-offset slider and clicking OBJ/STL before the re-solve finished used to export the
+// form of the *previous* slider position (the solver takes ~200 ms per step on a near-square
+// rectangle glued to a circle): the file did not match the slider. Now the export waits for the form
+// of the slider's position. Checked independently: the exported mesh's volume (divergence theorem)
+// equals a fresh solve of the design at the final offset, not the one at the first.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { openApp, openSvgFiles, usePanelBrowser } from './support.mjs';
+
+const panel = usePanelBrowser();
+
+const SVG = '<svg xmlns="http://www.w3.org/2000/svg" width="300mm" height="150mm" viewBox="0 0 300 150">' +
+  `<rect x="45" y="50" width="55" height="45"/><circle cx="220" cy="75" r="${200 / (2 * Math.PI)}"/></svg>`;
+const PT3_TO_MM3 = Math.pow(25.4 / 72, 3);
+
+function objVolume(text) {
+  const v = [];
+  let vol = 0;
+  for (const line of text.split('\n')) {
+    const p = line.trim().split(/\s+/);
+    if (p[0] === 'v') v.push(p.slice(1, 4).map(Number));
+    if (p[0] === 'f') {
+      const [a, b, c] = p.slice(1, 4).map((x) => v[Number(x.split('/')[0]) - 1]);
+      vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+    }
+  }
+  return vol;
+}
+
+test('3D tab: OBJ clicked while the slider\'s new position is still solving exports the new position\'s form', async () => {
+  const page = await openApp(panel);
+  await openSvgFiles(page, [['rect-circle.svg', SVG]]);
+  await page.click('.tabs button[data-view="3d"]');
+  await page.waitForFunction(() => document.body.dataset.solve === 'ok' && !document.body.dataset.solving, null, { timeout: 30000 });
+  // A fresh solve of the design, outside the panel's pipeline, at a given slider position (‰ of the perimeter).
+  const solveAt = (permille) => page.evaluate((pm) => {
+    const d = window.DF.app.design();
+    return window.DF.core.simulate(d.pieces.map((p) => p.path), { offset: (pm / 1000) * d.perimeter }).stats.volume;
+  }, permille);
+  const before = (await solveAt(0)) * PT3_TO_MM3;
+  const wanted = (await solveAt(800)) * PT3_TO_MM3;
+  assert.ok(Math.abs(before - wanted) > 1, `precondition: the two positions differ in volume (${before} vs ${wanted} mm³)`);
+
+  await page.$eval('#offset3d', (el) => {
+    el.value = '800';
+    el.dispatchEvent(new Event('input'));
+  });
+  await page.waitForFunction(() => document.body.dataset.solving === 'yes');
+  const [dl] = await Promise.all([page.waitForEvent('download', { timeout: 30000 }), page.click('#export-obj')]);
+  const got = objVolume(readFileSync(await dl.path(), 'utf8'));
+  assert.equal(await page.$eval('#offset3d', (el) => el.value), '800');
+  assert.ok(Math.abs(got - wanted) <= 1e-4 * Math.abs(wanted) + 0.01,
+    `exported volume ${got.toFixed(2)} mm³: the form at the slider's position has ${wanted.toFixed(2)}, the previous position's ${before.toFixed(2)}`);
+  await page.waitForFunction(() => /Downloaded d-form-mm\.obj/.test(document.querySelector('#status').textContent));
+  await page.close();
+});
