@@ -385,7 +385,8 @@
     var litres = (v * Math.pow(25.4 / 72, 3)) / 1e6;
     var inUnits = v / Math.pow(perUnit, 3);
     return 'Volume ' + inUnits.toLocaleString('en-US', { maximumFractionDigits: inUnits < 100 ? 3 : 0 }) + ' ' + unit + '³ (' +
-      litres.toLocaleString('en-US', { maximumFractionDigits: litres < 10 ? 3 : 2 }) + ' L)';
+      // Three significant digits: a student's form is often 0.01–0.1 L, where fixed decimals read 0.0196 L as "0.02".
+      litres.toLocaleString('en-US', litres < 100 ? { maximumSignificantDigits: 3 } : { maximumFractionDigits: 1 }) + ' L)';
   }
   function areaText(a) {
     var inUnits = a / Math.pow(DF.units.PER_UNIT[unit], 2);
