@@ -33,9 +33,7 @@ fn nearest(segs: &[Cubic], q: P) -> (f64, usize, f64) {
     let (_, i, mut t) = best;
     let c = &segs[i];
     for _ in 0..30 {
-        let (b, d) = (eval(c, t), deriv(c, t));
-        let h = 1e-6;
-        let d2 = [0, 1].map(|k| (deriv(c, (t + h).min(1.0))[k] - deriv(c, (t - h).max(0.0))[k]) / ((t + h).min(1.0) - (t - h).max(0.0)));
+        let (b, d, d2) = (eval(c, t), deriv(c, t), deriv2(c, t));
         let g = (b[0] - q[0]) * d[0] + (b[1] - q[1]) * d[1];
         let gp = d[0] * d[0] + d[1] * d[1] + (b[0] - q[0]) * d2[0] + (b[1] - q[1]) * d2[1];
         if gp <= 0.0 {

@@ -255,6 +255,11 @@ pub fn deriv(c: &Cubic, t: f64) -> P {
     [0, 1].map(|k| (0..3).map(|i| w[i] * (c[i + 1][k] - c[i][k])).sum())
 }
 
+/// B''(t).
+pub fn deriv2(c: &Cubic, t: f64) -> P {
+    [0, 1].map(|k| 6.0 * ((1.0 - t) * (c[2][k] - 2.0 * c[1][k] + c[0][k]) + t * (c[3][k] - 2.0 * c[2][k] + c[1][k])))
+}
+
 /// The first part of `c`, up to parameter `t` (de Casteljau).
 pub fn head(c: &Cubic, t: f64) -> Cubic {
     let lerp = |a: P, b: P| [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
