@@ -179,6 +179,21 @@ fn rectangle_with_circle_converges_with_its_corners_on_the_seam() {
     assert!((v64 - s.stats.volume).abs() / s.stats.volume < 5e-3, "volume 64 vs 128 seam vertices: {v64} vs {}", s.stats.volume);
 }
 
+/// Regression: a near-square rectangle glued to a circle ended on a wrong branch from every
+/// saddle start (strain ~5 %); restarted from the convex hull of where a start ended, it converges.
+#[test]
+fn near_square_rectangle_with_circle_converges_from_a_hull_restart() {
+    let r = Contour::new([(0.0, 0.0), (55.0, 0.0), (55.0, 45.0), (0.0, 45.0)].iter().map(|&(x, y)| Knot::corner(Point::new(x, y))).collect(), 0).unwrap();
+    let c = circle_arcs(16).transformed(Affine::scale(200.0 / perimeter(&circle_arcs(16))));
+    let s = run(&r, &c, 0.0, 128);
+    assert!(s.stats.converged && s.stats.reflex_edges == 0, "wanted converged and convex, got {:?}", s.stats);
+    assert_closed(&s);
+    let cv = convexity_violation(&s);
+    assert!(cv < 1e-5, "a vertex lies {cv} (relative) outside a face plane: not convex");
+    let v64 = run(&r, &c, 0.0, 64).stats.volume;
+    assert!((v64 - s.stats.volume).abs() / s.stats.volume < 5e-3, "volume 64 vs 128 seam vertices: {v64} vs {}", s.stats.volume);
+}
+
 #[test]
 fn volume_is_the_same_at_two_resolutions() {
     let e = ellipse(2.0, 1.0);

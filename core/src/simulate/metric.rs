@@ -74,7 +74,8 @@ impl Triangulation {
         Some(Triangulation::from_tris(nf, tris))
     }
 
-    fn from_tris(n: usize, tris: Vec<[usize; 3]>) -> Self {
+    /// A triangulation from its triangles (counter-clockwise; the caller checks they tile the polygon).
+    pub fn from_tris(n: usize, tris: Vec<[usize; 3]>) -> Self {
         let mut t = Triangulation { tris, n, edge: HashMap::new() };
         t.edge.reserve(3 * t.tris.len());
         for ti in 0..t.tris.len() {

@@ -63,10 +63,12 @@
 //! ## Files
 //! - [`options`]: user options and their checks; [`seam`]: the two sampled pieces;
 //!   [`metric`]: chord triangulations of a flat polygon and flips; [`solver`]: Levenberg–Marquardt
-//!   with flips; [`stats`]: strain, seam gap, area, angle defects, volume; [`clock`]: a timer
-//!   that works natively and in wasm32.
+//!   with flips; [`hull`]: triangulations read off a convex hull, to restart a failed start;
+//!   [`stats`]: strain, seam gap, area, angle defects, volume; [`clock`]: a timer that works
+//!   natively and in wasm32.
 
 pub mod clock;
+pub mod hull;
 pub mod metric;
 pub mod normal;
 pub mod options;

@@ -420,18 +420,21 @@ struct Patience {
     attempt: usize,
     level: usize,
     cap: usize,
+    /// Whether a failed multistart attempt restarts from the convex hull of where it ended
+    /// ([`super::hull`]).
+    hull: bool,
 }
 
 /// The first pass: a healthy start needs a few dozen steps per level (the whole 32→256 solve of
 /// two ellipses takes ~100–400), so a start that needs more is dropped for the next one.
-const QUICK: Patience = Patience { attempt: 60, level: 150, cap: 1000 };
+const QUICK: Patience = Patience { attempt: 60, level: 150, cap: 1000, hull: false };
 
 /// The second pass, run only when the first found no convex isometric branch: pieces with
 /// straight stretches (rectangles, rounded rectangles, polygons) give D-forms with nearly flat
 /// regions, whose chords sit between nearly coplanar triangles and take many steps and flips to
 /// settle (a rounded 60×40 rectangle glued to a circle: ~2,300 steps in all, ~70 ms native at
 /// 256 seam vertices) — longer than the quick budgets allow, but the branch is right.
-const PATIENT: Patience = Patience { attempt: 2000, level: 2000, cap: usize::MAX };
+const PATIENT: Patience = Patience { attempt: 2000, level: 2000, cap: usize::MAX, hull: true };
 
 /// Steps allowed to a warm start before it is dropped for a cold solve. A slider step of 1 % of
 /// the perimeter takes 25–105 steps from the previous result (two 2:1 ellipses, an ellipse with
@@ -521,13 +524,30 @@ fn multistart(
         let r = relax(pieces, &mut x, &mut t, budget, step_tol, Orientation::Free);
         steps.0 += r.iterations;
         steps.1 += r.flips;
-        let strain = max_strain(&x, &bars(pieces, &t));
-        let good = is_good(&x, &t, r.converged || (step_tol > STEP_TOL && strain <= LEVEL_STRAIN_TOL));
+        let mut strain = max_strain(&x, &bars(pieces, &t));
+        let mut good = is_good(&x, &t, r.converged || (step_tol > STEP_TOL && strain <= LEVEL_STRAIN_TOL));
+        let mut converged = r.converged;
+        // A failed start: restart it from the convex hull of where it ended, whose chords the
+        // local flips could not reach ([`super::hull`]).
+        if !good && patience.hull && steps.0 < patience.cap {
+            if let Some(mut th) = super::hull::triangulations(&x, pieces) {
+                let mut xh = x.clone();
+                let budget = patience.cap.saturating_sub(steps.0).clamp(1, patience.attempt);
+                let rh = relax(pieces, &mut xh, &mut th, budget, step_tol, Orientation::Kept);
+                steps.0 += rh.iterations;
+                steps.1 += rh.flips;
+                let sh = max_strain(&xh, &bars(pieces, &th));
+                if sh < strain {
+                    (x, t, strain, converged) = (xh, th, sh, rh.converged);
+                    good = is_good(&x, &t, converged || (step_tol > STEP_TOL && strain <= LEVEL_STRAIN_TOL));
+                }
+            }
+        }
         if good {
             return Some((x, t, true, k + 1));
         }
         if best.as_ref().is_none_or(|b| strain < b.4) {
-            best = Some((x, t, r.converged, k, strain));
+            best = Some((x, t, converged, k, strain));
         }
         if steps.0 >= patience.cap {
             break;
