@@ -178,6 +178,19 @@ impl<'input> SvgFile<'input> {
     /// The shapes with these ids, in this order: only they (and their ancestors) are read and
     /// checked, so an unreadable shape elsewhere in the file does not matter.
     pub fn shapes_by_id(&self, ids: &[String]) -> Result<Vec<Shape<'_, 'input>>, String> {
+        // The same shape twice would be one piece used as both (normalize then edited it twice
+        // and stopped with an internal error; connect wrote every connector id twice).
+        if let Some((k, id)) = ids
+            .iter()
+            .enumerate()
+            .find(|(k, id)| ids[..*k].contains(id))
+        {
+            return Err(format!(
+                "--id \"{id}\" is given twice (choice {} and {}); each piece is a different shape",
+                ids.iter().position(|x| x == id).unwrap_or(0) + 1,
+                k + 1
+            ));
+        }
         let found = self.found();
         ids.iter()
             .map(|id| {
@@ -358,6 +371,20 @@ mod tests {
         assert!(
             file.shapes().unwrap_err().contains("#r1"),
             "without ids every shape is read"
+        );
+    }
+
+    #[test]
+    fn a_shape_chosen_twice_is_refused_by_name() {
+        let text = r#"<svg xmlns="http://www.w3.org/2000/svg"><rect id="a" width="1" height="1"/><rect id="b" width="1" height="1"/></svg>"#;
+        let file = SvgFile::parse(text, None).unwrap();
+        let err = file
+            .shapes_by_id(&["a".into(), "b".into(), "a".into()])
+            .err()
+            .unwrap_or_default();
+        assert!(
+            err.contains("--id \"a\" is given twice (choice 1 and 3)"),
+            "got {err:?}"
         );
     }
 
