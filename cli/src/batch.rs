@@ -292,7 +292,16 @@ pub fn connect(
     };
     let result = api::connect::connect(&paths, &options).map_err(|e| e.to_string())?;
     let hairline = laser::HAIRLINE_PX / file.scale.px_per_user;
-    let font = len("label-size", &a.label_size)?.unwrap_or(0.4 * result.pitch);
+    let font = match len("label-size", &a.label_size)? {
+        None => 0.4 * result.pitch,
+        Some(size) if size.is_finite() && size > 0.0 => size,
+        Some(_) => {
+            return Err(format!(
+                "--label-size: must be a positive length, got {}",
+                a.label_size.as_deref().unwrap_or_default()
+            ))
+        }
+    };
     let mut edits = Edits::default();
     let mut groups = Vec::new();
     for (i, (s, piece)) in shapes.iter().zip(&result.pieces).enumerate() {
@@ -358,4 +367,43 @@ pub fn connect(
         report.push_str(&format!("warning: {w}\n"));
     }
     Ok((edits.apply(source)?, report))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Opts {
+        #[command(flatten)]
+        connect: ConnectArgs,
+    }
+
+    const TWO_SQUARES: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="50mm" viewBox="0 0 100 50">
+        <rect id="a" x="5" y="5" width="40" height="40"/><rect id="b" x="55" y="5" width="40" height="40"/></svg>"#;
+
+    fn run_connect(args: &[&str]) -> Result<(String, String), String> {
+        let opts = Opts::try_parse_from(std::iter::once("connect").chain(args.iter().copied()))
+            .map_err(|e| e.to_string())?;
+        let file = SvgFile::parse(TWO_SQUARES, None)?;
+        connect(TWO_SQUARES, &file, &[], &opts.connect)
+    }
+
+    #[test]
+    fn a_label_size_that_is_not_a_positive_length_is_refused() {
+        // Each of these wrote `font-size:-1.000000` or `font-size:0.000000`: no numbers engraved.
+        for bad in ["-1", "0", "-0.5in"] {
+            let err = run_connect(&["--count", "8", &format!("--label-size={bad}")])
+                .err()
+                .unwrap_or_default();
+            assert_eq!(
+                err,
+                format!("--label-size: must be a positive length, got {bad}"),
+                "--label-size={bad}"
+            );
+        }
+        let (svg, _) = run_connect(&["--count", "8", "--label-size", "3"]).unwrap();
+        assert!(svg.contains("font-size:3.000000;"), "wanted 3 mm numbers");
+    }
 }
