@@ -211,37 +211,37 @@ pub struct ConnectArgs {
     #[arg(long, default_value = "stitch")]
     pub kind: String,
     /// Number of connectors on each piece (give this or --pitch).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub count: Option<f64>,
     /// Distance between connectors along the edge, e.g. 12mm (rounded to divide the perimeter).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub pitch: Option<String>,
     /// Shift of every connector, as a fraction of the pitch (0 to 1).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub slide: Option<f64>,
     /// Connector 1 on each piece: distances along A and B from their first nodes.
-    #[arg(long, num_args = 2, value_names = ["A", "B"])]
+    #[arg(long, num_args = 2, value_names = ["A", "B"], allow_hyphen_values = true)]
     pub start: Option<Vec<String>>,
     /// Edge to hole centre.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub inset: Option<String>,
     /// Hole diameter.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub diameter: Option<String>,
     /// Tooth or leaf length.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub length: Option<String>,
     /// Tooth flank angle in degrees (90 = square).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub angle: Option<f64>,
     /// Connectors on the other side of the edge.
     #[arg(long)]
     pub invert: bool,
     /// Laser kerf to compensate (cut width).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub kerf: Option<String>,
     /// Height of the engraved numbers (default 40% of the pitch).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub label_size: Option<String>,
     /// Do not engrave connector numbers.
     #[arg(long)]
@@ -388,6 +388,34 @@ mod tests {
             .map_err(|e| e.to_string())?;
         let file = SvgFile::parse(TWO_SQUARES, None)?;
         connect(TWO_SQUARES, &file, &[], &opts.connect)
+    }
+
+    #[test]
+    fn negative_values_reach_the_checks_instead_of_being_taken_for_options() {
+        // `--pitch -5` was "unexpected argument '-5' found" (with a tip that does not work), and
+        // a negative --start, which the core accepts, could not be given at all.
+        let err = |args: &[&str]| run_connect(args).err().unwrap_or_default();
+        assert!(
+            err(&["--pitch", "-5"])
+                .starts_with("Option `pitch`: must be a positive number, got -5"),
+            "got {}",
+            err(&["--pitch", "-5"])
+        );
+        assert!(
+            err(&["--count", "8", "--inset", "-1mm"])
+                .starts_with("Option `inset`: must be a positive number, got -1"),
+            "got {}",
+            err(&["--count", "8", "--inset", "-1mm"])
+        );
+        assert_eq!(
+            err(&["--count", "-3"]),
+            "Option `count`: must be a whole number from 1 to 10000, got -3"
+        );
+        assert_eq!(
+            err(&["--count", "8", "--slide", "-0.5"]),
+            "Option `slide`: must be between 0 and 1 (a fraction of the pitch), got -0.5"
+        );
+        assert!(run_connect(&["--count", "8", "--start", "-5", "3"]).is_ok());
     }
 
     #[test]
