@@ -58,14 +58,22 @@ pub fn pick<'a, 'i>(
     Ok(chosen)
 }
 
-/// One core path per shape, in root user units; a compound shape is an error naming it.
-pub fn read(shapes: &[Shape]) -> Result<Vec<PathDto>, String> {
+/// Root user units → the display unit: the core works in the unit the user reads and types,
+/// so the lengths in its messages (perimeters, diameters, pitches) are in that unit too. The
+/// core is scale-free (defaults are fractions of the pitch, tolerances relative).
+fn to_display(file: &SvgFile) -> Affine {
+    Affine::scale(file.scale.to_unit(1.0))
+}
+
+/// One core path per shape, in the display unit; a compound shape is an error naming it.
+pub fn read(file: &SvgFile, shapes: &[Shape]) -> Result<Vec<PathDto>, String> {
+    let to_display = to_display(file);
     shapes
         .iter()
         .map(|s| {
             let subpaths = api::svg::path_from_svg(&s.d).map_err(|e| format!("{}: {e}", s.name))?;
             match subpaths.as_slice() {
-                [one] => Ok(map_path(one, s.ctm)),
+                [one] => Ok(map_path(one, to_display * s.ctm)),
                 _ => Err(format!(
                     "{} has {} subpaths; a D-form piece must be one outline (break it apart first)",
                     s.name,
@@ -76,10 +84,11 @@ pub fn read(shapes: &[Shape]) -> Result<Vec<PathDto>, String> {
         .collect()
 }
 
-/// Path data of a root-user-space path in the shape's local coordinates.
-fn local_d(shape: &Shape, path: &PathDto) -> Result<String, String> {
-    let inverse = if shape.ctm.determinant().abs() > 0.0 {
-        shape.ctm.inverse()
+/// Path data of a path in the display unit (root axes) in the shape's local coordinates.
+fn local_d(file: &SvgFile, shape: &Shape, path: &PathDto) -> Result<String, String> {
+    let ctm = to_display(file) * shape.ctm;
+    let inverse = if ctm.determinant().abs() > 0.0 {
+        ctm.inverse()
     } else {
         return Err(format!(
             "{} has a transform that flattens it to nothing",
@@ -93,6 +102,7 @@ fn local_d(shape: &Shape, path: &PathDto) -> Result<String, String> {
 /// dropped, so Inkscape does not regenerate the old shape); other shapes become `<path>`.
 fn replace_outline(
     source: &str,
+    file: &SvgFile,
     shape: &Shape,
     path: &PathDto,
     edits: &mut Edits,
@@ -106,7 +116,7 @@ fn replace_outline(
             shape.name
         ));
     }
-    let d = escape(&local_d(shape, path)?);
+    let d = escape(&local_d(file, shape, path)?);
     if node.tag_name().name() == "path" {
         for attr in node.attributes() {
             if attr.namespace() == Some(SODIPODI_NS) {
@@ -138,14 +148,13 @@ fn replace_outline(
 /// `dformer measure`: one line (or JSON object) per shape.
 pub fn measure(file: &SvgFile, ids: &[String], as_json: bool) -> Result<String, String> {
     let shapes = pick(file, ids, 1, None)?;
-    let paths = read(&shapes)?;
+    let paths = read(file, &shapes)?;
     let unit = &file.scale.unit;
     let mut rows = Vec::new();
     let mut text = String::new();
     for (s, p) in shapes.iter().zip(&paths) {
         let m = api::measure(p, None).map_err(|e| format!("{}: {e}", s.name))?;
-        let perimeter = file.scale.to_unit(m.perimeter);
-        let area = m.area * file.scale.to_unit(1.0).powi(2);
+        let (perimeter, area) = (m.perimeter, m.area);
         // The core reports orientation for y-up; SVG user space is y-down.
         let screen = if m.orientation == "ccw" {
             "clockwise"
@@ -174,12 +183,12 @@ pub fn normalize(
     pivot: &str,
 ) -> Result<(String, String), String> {
     let shapes = pick(file, ids, 2, None)?;
-    let paths = read(&shapes)?;
+    let paths = read(file, &shapes)?;
     let target = match target {
         "largest" | "smallest" | "mean" | "first" => json!(target),
         length => json!(file
             .scale
-            .parse_user(length)
+            .parse(length)
             .map_err(|e| format!("--target: {e}"))?),
     };
     let options = serde_json::from_value(json!({ "target": target, "pivot": pivot }))
@@ -187,12 +196,12 @@ pub fn normalize(
     let result = api::normalize::normalize(&paths, &options).map_err(|e| e.to_string())?;
     let mut edits = Edits::default();
     for (s, p) in shapes.iter().zip(&result.paths) {
-        replace_outline(source, s, p, &mut edits)?;
+        replace_outline(source, file, s, p, &mut edits)?;
     }
     let report = format!(
         "{} shapes normalized to perimeter {:.6} {} (scales {})\n",
         shapes.len(),
-        file.scale.to_unit(result.perimeter),
+        result.perimeter,
         file.scale.unit,
         result
             .scales
@@ -256,18 +265,14 @@ pub fn connect(
     a: &ConnectArgs,
 ) -> Result<(String, String), String> {
     let shapes = pick(file, ids, 2, Some(2))?;
-    let paths = read(&shapes)?;
+    let paths = read(file, &shapes)?;
     let len = |name: &str, v: &Option<String>| {
         v.as_deref()
-            .map(|t| {
-                file.scale
-                    .parse_user(t)
-                    .map_err(|e| format!("--{name}: {e}"))
-            })
+            .map(|t| file.scale.parse(t).map_err(|e| format!("--{name}: {e}")))
             .transpose()
     };
     let start = match a.start.as_deref() {
-        Some([sa, sb]) => Some([file.scale.parse_user(sa)?, file.scale.parse_user(sb)?]),
+        Some([sa, sb]) => Some([file.scale.parse(sa)?, file.scale.parse(sb)?]),
         Some(other) => {
             return Err(format!(
                 "--start: wanted two distances (A and B), got {}",
@@ -292,6 +297,8 @@ pub fn connect(
     };
     let result = api::connect::connect(&paths, &options).map_err(|e| e.to_string())?;
     let hairline = laser::HAIRLINE_PX / file.scale.px_per_user;
+    // The core's results are in the display unit; the layers are drawn in root user units.
+    let from_display = to_display(file).inverse();
     let font = match len("label-size", &a.label_size)? {
         None => 0.4 * result.pitch,
         Some(size) if size.is_finite() && size > 0.0 => size,
@@ -307,12 +314,14 @@ pub fn connect(
     for (i, (s, piece)) in shapes.iter().zip(&result.pieces).enumerate() {
         let title = format!("Piece {} {}", ["A", "B"][i], s.name);
         if a.kind != "stitch" {
-            replace_outline(source, s, &piece.outline, &mut edits)?;
+            replace_outline(source, file, s, &piece.outline, &mut edits)?;
         }
         let svg_of = |paths: Vec<&PathDto>| {
             paths
                 .into_iter()
-                .map(|p| api::svg::path_to_svg(p).map_err(|e| e.to_string()))
+                .map(|p| {
+                    api::svg::path_to_svg(&map_path(p, from_display)).map_err(|e| e.to_string())
+                })
                 .collect::<Result<Vec<_>, _>>()
         };
         let holes = svg_of(piece.holes.iter().map(|h| &h.path).collect())?;
@@ -344,9 +353,16 @@ pub fn connect(
             let items: Vec<_> = piece
                 .labels
                 .iter()
-                .map(|l| (l.text.clone(), l.at, l.angle))
+                .map(|l| {
+                    let at = from_display * Point::new(l.at[0], l.at[1]);
+                    (l.text.clone(), [at.x, at.y], l.angle)
+                })
                 .collect();
-            let body = laser::labels(&format!("dformer-label-{}", s.key), &items, font);
+            let body = laser::labels(
+                &format!("dformer-label-{}", s.key),
+                &items,
+                font / file.scale.to_unit(1.0),
+            );
             groups.push(Group {
                 layer: "engrave",
                 piece_key: s.key.clone(),
@@ -358,10 +374,7 @@ pub fn connect(
     laser::write(source, file.doc.root_element(), &groups, &mut edits)?;
     let mut report = format!(
         "{} {} connectors per piece, {:.6} {} apart\n",
-        result.count,
-        a.kind,
-        file.scale.to_unit(result.pitch),
-        file.scale.unit
+        result.count, a.kind, result.pitch, file.scale.unit
     );
     for w in &result.warnings {
         report.push_str(&format!("warning: {w}\n"));
@@ -384,10 +397,63 @@ mod tests {
         <rect id="a" x="5" y="5" width="40" height="40"/><rect id="b" x="55" y="5" width="40" height="40"/></svg>"#;
 
     fn run_connect(args: &[&str]) -> Result<(String, String), String> {
+        connect_in(TWO_SQUARES, None, args)
+    }
+
+    fn connect_in(
+        svg: &str,
+        unit: Option<&str>,
+        args: &[&str],
+    ) -> Result<(String, String), String> {
         let opts = Opts::try_parse_from(std::iter::once("connect").chain(args.iter().copied()))
             .map_err(|e| e.to_string())?;
-        let file = SvgFile::parse(TWO_SQUARES, None)?;
-        connect(TWO_SQUARES, &file, &[], &opts.connect)
+        let file = SvgFile::parse(svg, unit)?;
+        connect(svg, &file, &[], &opts.connect)
+    }
+
+    #[test]
+    fn lengths_in_messages_are_in_the_unit_the_user_types() {
+        // A px document read in mm: `--diameter 30 --kerf 40` said "Option `kerf`:
+        // 151.1811023622047 is not smaller than the hole diameter 113.38582677165354".
+        let px = r#"<svg xmlns="http://www.w3.org/2000/svg" width="800" height="400">
+            <rect id="a" x="10" y="10" width="192" height="192"/><rect id="b" x="300" y="10" width="192" height="192"/></svg>"#;
+        let err = connect_in(
+            px,
+            Some("mm"),
+            &["--count", "4", "--diameter", "30", "--kerf", "40"],
+        )
+        .err()
+        .unwrap_or_default();
+        assert_eq!(
+            err,
+            "Option `kerf`: 40 is not smaller than the hole diameter 30: the holes would vanish"
+        );
+        let err = connect_in(px, Some("mm"), &["--count", "4", "--diameter", "60"])
+            .err()
+            .unwrap_or_default();
+        assert!(
+            err.starts_with("Holes of diameter 60 do not fit between connectors 50."),
+            "wanted 60 mm holes 50.8 mm apart, got {err}"
+        );
+        // In a mm document a length typed in mm comes back as typed (was -1.0000000000000002).
+        assert_eq!(
+            run_connect(&["--count", "8", "--inset", "-1mm"])
+                .err()
+                .unwrap_or_default(),
+            "Option `inset`: must be a positive number, got -1"
+        );
+        // The layers are still drawn in the file's px: 4 connectors 50.8 mm = 192 px apart, and
+        // 5 mm numbers are 18.9 px high.
+        let (svg, report) =
+            connect_in(px, Some("mm"), &["--count", "4", "--label-size", "5"]).unwrap();
+        assert!(
+            report.starts_with("4 stitch connectors per piece, 50.800000 mm apart"),
+            "got {report}"
+        );
+        assert!(
+            svg.contains("font-size:18.897638;"),
+            "wanted 18.897638 px numbers"
+        );
     }
 
     #[test]
