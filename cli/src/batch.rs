@@ -58,14 +58,22 @@ pub fn pick<'a, 'i>(
     Ok(chosen)
 }
 
-/// One core path per shape, in root user units; a compound shape is an error naming it.
-pub fn read(shapes: &[Shape]) -> Result<Vec<PathDto>, String> {
+/// Root user units → the display unit: the core works in the unit the user reads and types,
+/// so the lengths in its messages (perimeters, diameters, pitches) are in that unit too. The
+/// core is scale-free (defaults are fractions of the pitch, tolerances relative).
+fn to_display(file: &SvgFile) -> Affine {
+    Affine::scale(file.scale.to_unit(1.0))
+}
+
+/// One core path per shape, in the display unit; a compound shape is an error naming it.
+pub fn read(file: &SvgFile, shapes: &[Shape]) -> Result<Vec<PathDto>, String> {
+    let to_display = to_display(file);
     shapes
         .iter()
         .map(|s| {
             let subpaths = api::svg::path_from_svg(&s.d).map_err(|e| format!("{}: {e}", s.name))?;
             match subpaths.as_slice() {
-                [one] => Ok(map_path(one, s.ctm)),
+                [one] => Ok(map_path(one, to_display * s.ctm)),
                 _ => Err(format!(
                     "{} has {} subpaths; a D-form piece must be one outline (break it apart first)",
                     s.name,
@@ -76,10 +84,11 @@ pub fn read(shapes: &[Shape]) -> Result<Vec<PathDto>, String> {
         .collect()
 }
 
-/// Path data of a root-user-space path in the shape's local coordinates.
-fn local_d(shape: &Shape, path: &PathDto) -> Result<String, String> {
-    let inverse = if shape.ctm.determinant().abs() > 0.0 {
-        shape.ctm.inverse()
+/// Path data of a path in the display unit (root axes) in the shape's local coordinates.
+fn local_d(file: &SvgFile, shape: &Shape, path: &PathDto) -> Result<String, String> {
+    let ctm = to_display(file) * shape.ctm;
+    let inverse = if ctm.determinant().abs() > 0.0 {
+        ctm.inverse()
     } else {
         return Err(format!(
             "{} has a transform that flattens it to nothing",
@@ -93,6 +102,7 @@ fn local_d(shape: &Shape, path: &PathDto) -> Result<String, String> {
 /// dropped, so Inkscape does not regenerate the old shape); other shapes become `<path>`.
 fn replace_outline(
     source: &str,
+    file: &SvgFile,
     shape: &Shape,
     path: &PathDto,
     edits: &mut Edits,
@@ -106,7 +116,7 @@ fn replace_outline(
             shape.name
         ));
     }
-    let d = escape(&local_d(shape, path)?);
+    let d = escape(&local_d(file, shape, path)?);
     if node.tag_name().name() == "path" {
         for attr in node.attributes() {
             if attr.namespace() == Some(SODIPODI_NS) {
@@ -138,14 +148,13 @@ fn replace_outline(
 /// `dformer measure`: one line (or JSON object) per shape.
 pub fn measure(file: &SvgFile, ids: &[String], as_json: bool) -> Result<String, String> {
     let shapes = pick(file, ids, 1, None)?;
-    let paths = read(&shapes)?;
+    let paths = read(file, &shapes)?;
     let unit = &file.scale.unit;
     let mut rows = Vec::new();
     let mut text = String::new();
     for (s, p) in shapes.iter().zip(&paths) {
         let m = api::measure(p, None).map_err(|e| format!("{}: {e}", s.name))?;
-        let perimeter = file.scale.to_unit(m.perimeter);
-        let area = m.area * file.scale.to_unit(1.0).powi(2);
+        let (perimeter, area) = (m.perimeter, m.area);
         // The core reports orientation for y-up; SVG user space is y-down.
         let screen = if m.orientation == "ccw" {
             "clockwise"
@@ -174,12 +183,12 @@ pub fn normalize(
     pivot: &str,
 ) -> Result<(String, String), String> {
     let shapes = pick(file, ids, 2, None)?;
-    let paths = read(&shapes)?;
+    let paths = read(file, &shapes)?;
     let target = match target {
         "largest" | "smallest" | "mean" | "first" => json!(target),
         length => json!(file
             .scale
-            .parse_user(length)
+            .parse(length)
             .map_err(|e| format!("--target: {e}"))?),
     };
     let options = serde_json::from_value(json!({ "target": target, "pivot": pivot }))
@@ -187,12 +196,12 @@ pub fn normalize(
     let result = api::normalize::normalize(&paths, &options).map_err(|e| e.to_string())?;
     let mut edits = Edits::default();
     for (s, p) in shapes.iter().zip(&result.paths) {
-        replace_outline(source, s, p, &mut edits)?;
+        replace_outline(source, file, s, p, &mut edits)?;
     }
     let report = format!(
         "{} shapes normalized to perimeter {:.6} {} (scales {})\n",
         shapes.len(),
-        file.scale.to_unit(result.perimeter),
+        result.perimeter,
         file.scale.unit,
         result
             .scales
@@ -211,37 +220,37 @@ pub struct ConnectArgs {
     #[arg(long, default_value = "stitch")]
     pub kind: String,
     /// Number of connectors on each piece (give this or --pitch).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub count: Option<f64>,
     /// Distance between connectors along the edge, e.g. 12mm (rounded to divide the perimeter).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub pitch: Option<String>,
     /// Shift of every connector, as a fraction of the pitch (0 to 1).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub slide: Option<f64>,
     /// Connector 1 on each piece: distances along A and B from their first nodes.
-    #[arg(long, num_args = 2, value_names = ["A", "B"])]
+    #[arg(long, num_args = 2, value_names = ["A", "B"], allow_hyphen_values = true)]
     pub start: Option<Vec<String>>,
     /// Edge to hole centre.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub inset: Option<String>,
     /// Hole diameter.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub diameter: Option<String>,
     /// Tooth or leaf length.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub length: Option<String>,
     /// Tooth flank angle in degrees (90 = square).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub angle: Option<f64>,
     /// Connectors on the other side of the edge.
     #[arg(long)]
     pub invert: bool,
     /// Laser kerf to compensate (cut width).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub kerf: Option<String>,
     /// Height of the engraved numbers (default 40% of the pitch).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub label_size: Option<String>,
     /// Do not engrave connector numbers.
     #[arg(long)]
@@ -256,18 +265,14 @@ pub fn connect(
     a: &ConnectArgs,
 ) -> Result<(String, String), String> {
     let shapes = pick(file, ids, 2, Some(2))?;
-    let paths = read(&shapes)?;
+    let paths = read(file, &shapes)?;
     let len = |name: &str, v: &Option<String>| {
         v.as_deref()
-            .map(|t| {
-                file.scale
-                    .parse_user(t)
-                    .map_err(|e| format!("--{name}: {e}"))
-            })
+            .map(|t| file.scale.parse(t).map_err(|e| format!("--{name}: {e}")))
             .transpose()
     };
     let start = match a.start.as_deref() {
-        Some([sa, sb]) => Some([file.scale.parse_user(sa)?, file.scale.parse_user(sb)?]),
+        Some([sa, sb]) => Some([file.scale.parse(sa)?, file.scale.parse(sb)?]),
         Some(other) => {
             return Err(format!(
                 "--start: wanted two distances (A and B), got {}",
@@ -292,18 +297,31 @@ pub fn connect(
     };
     let result = api::connect::connect(&paths, &options).map_err(|e| e.to_string())?;
     let hairline = laser::HAIRLINE_PX / file.scale.px_per_user;
-    let font = len("label-size", &a.label_size)?.unwrap_or(0.4 * result.pitch);
+    // The core's results are in the display unit; the layers are drawn in root user units.
+    let from_display = to_display(file).inverse();
+    let font = match len("label-size", &a.label_size)? {
+        None => 0.4 * result.pitch,
+        Some(size) if size.is_finite() && size > 0.0 => size,
+        Some(_) => {
+            return Err(format!(
+                "--label-size: must be a positive length, got {}",
+                a.label_size.as_deref().unwrap_or_default()
+            ))
+        }
+    };
     let mut edits = Edits::default();
     let mut groups = Vec::new();
     for (i, (s, piece)) in shapes.iter().zip(&result.pieces).enumerate() {
         let title = format!("Piece {} {}", ["A", "B"][i], s.name);
         if a.kind != "stitch" {
-            replace_outline(source, s, &piece.outline, &mut edits)?;
+            replace_outline(source, file, s, &piece.outline, &mut edits)?;
         }
         let svg_of = |paths: Vec<&PathDto>| {
             paths
                 .into_iter()
-                .map(|p| api::svg::path_to_svg(p).map_err(|e| e.to_string()))
+                .map(|p| {
+                    api::svg::path_to_svg(&map_path(p, from_display)).map_err(|e| e.to_string())
+                })
                 .collect::<Result<Vec<_>, _>>()
         };
         let holes = svg_of(piece.holes.iter().map(|h| &h.path).collect())?;
@@ -335,9 +353,16 @@ pub fn connect(
             let items: Vec<_> = piece
                 .labels
                 .iter()
-                .map(|l| (l.text.clone(), l.at, l.angle))
+                .map(|l| {
+                    let at = from_display * Point::new(l.at[0], l.at[1]);
+                    (l.text.clone(), [at.x, at.y], l.angle)
+                })
                 .collect();
-            let body = laser::labels(&format!("dformer-label-{}", s.key), &items, font);
+            let body = laser::labels(
+                &format!("dformer-label-{}", s.key),
+                &items,
+                font / file.scale.to_unit(1.0),
+            );
             groups.push(Group {
                 layer: "engrave",
                 piece_key: s.key.clone(),
@@ -349,13 +374,130 @@ pub fn connect(
     laser::write(source, file.doc.root_element(), &groups, &mut edits)?;
     let mut report = format!(
         "{} {} connectors per piece, {:.6} {} apart\n",
-        result.count,
-        a.kind,
-        file.scale.to_unit(result.pitch),
-        file.scale.unit
+        result.count, a.kind, result.pitch, file.scale.unit
     );
     for w in &result.warnings {
         report.push_str(&format!("warning: {w}\n"));
     }
     Ok((edits.apply(source)?, report))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Opts {
+        #[command(flatten)]
+        connect: ConnectArgs,
+    }
+
+    const TWO_SQUARES: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="50mm" viewBox="0 0 100 50">
+        <rect id="a" x="5" y="5" width="40" height="40"/><rect id="b" x="55" y="5" width="40" height="40"/></svg>"#;
+
+    fn run_connect(args: &[&str]) -> Result<(String, String), String> {
+        connect_in(TWO_SQUARES, None, args)
+    }
+
+    fn connect_in(
+        svg: &str,
+        unit: Option<&str>,
+        args: &[&str],
+    ) -> Result<(String, String), String> {
+        let opts = Opts::try_parse_from(std::iter::once("connect").chain(args.iter().copied()))
+            .map_err(|e| e.to_string())?;
+        let file = SvgFile::parse(svg, unit)?;
+        connect(svg, &file, &[], &opts.connect)
+    }
+
+    #[test]
+    fn lengths_in_messages_are_in_the_unit_the_user_types() {
+        // A px document read in mm: `--diameter 30 --kerf 40` said "Option `kerf`:
+        // 151.1811023622047 is not smaller than the hole diameter 113.38582677165354".
+        let px = r#"<svg xmlns="http://www.w3.org/2000/svg" width="800" height="400">
+            <rect id="a" x="10" y="10" width="192" height="192"/><rect id="b" x="300" y="10" width="192" height="192"/></svg>"#;
+        let err = connect_in(
+            px,
+            Some("mm"),
+            &["--count", "4", "--diameter", "30", "--kerf", "40"],
+        )
+        .err()
+        .unwrap_or_default();
+        assert_eq!(
+            err,
+            "Option `kerf`: 40 is not smaller than the hole diameter 30: the holes would vanish"
+        );
+        let err = connect_in(px, Some("mm"), &["--count", "4", "--diameter", "60"])
+            .err()
+            .unwrap_or_default();
+        assert!(
+            err.starts_with("Holes of diameter 60 do not fit between connectors 50."),
+            "wanted 60 mm holes 50.8 mm apart, got {err}"
+        );
+        // In a mm document a length typed in mm comes back as typed (was -1.0000000000000002).
+        assert_eq!(
+            run_connect(&["--count", "8", "--inset", "-1mm"])
+                .err()
+                .unwrap_or_default(),
+            "Option `inset`: must be a positive number, got -1"
+        );
+        // The layers are still drawn in the file's px: 4 connectors 50.8 mm = 192 px apart, and
+        // 5 mm numbers are 18.9 px high.
+        let (svg, report) =
+            connect_in(px, Some("mm"), &["--count", "4", "--label-size", "5"]).unwrap();
+        assert!(
+            report.starts_with("4 stitch connectors per piece, 50.800000 mm apart"),
+            "got {report}"
+        );
+        assert!(
+            svg.contains("font-size:18.897638;"),
+            "wanted 18.897638 px numbers"
+        );
+    }
+
+    #[test]
+    fn negative_values_reach_the_checks_instead_of_being_taken_for_options() {
+        // `--pitch -5` was "unexpected argument '-5' found" (with a tip that does not work), and
+        // a negative --start, which the core accepts, could not be given at all.
+        let err = |args: &[&str]| run_connect(args).err().unwrap_or_default();
+        assert!(
+            err(&["--pitch", "-5"])
+                .starts_with("Option `pitch`: must be a positive number, got -5"),
+            "got {}",
+            err(&["--pitch", "-5"])
+        );
+        assert!(
+            err(&["--count", "8", "--inset", "-1mm"])
+                .starts_with("Option `inset`: must be a positive number, got -1"),
+            "got {}",
+            err(&["--count", "8", "--inset", "-1mm"])
+        );
+        assert_eq!(
+            err(&["--count", "-3"]),
+            "Option `count`: must be a whole number from 1 to 10000, got -3"
+        );
+        assert_eq!(
+            err(&["--count", "8", "--slide", "-0.5"]),
+            "Option `slide`: must be between 0 and 1 (a fraction of the pitch), got -0.5"
+        );
+        assert!(run_connect(&["--count", "8", "--start", "-5", "3"]).is_ok());
+    }
+
+    #[test]
+    fn a_label_size_that_is_not_a_positive_length_is_refused() {
+        // Each of these wrote `font-size:-1.000000` or `font-size:0.000000`: no numbers engraved.
+        for bad in ["-1", "0", "-0.5in"] {
+            let err = run_connect(&["--count", "8", &format!("--label-size={bad}")])
+                .err()
+                .unwrap_or_default();
+            assert_eq!(
+                err,
+                format!("--label-size: must be a positive length, got {bad}"),
+                "--label-size={bad}"
+            );
+        }
+        let (svg, _) = run_connect(&["--count", "8", "--label-size", "3"]).unwrap();
+        assert!(svg.contains("font-size:3.000000;"), "wanted 3 mm numbers");
+    }
 }

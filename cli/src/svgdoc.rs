@@ -12,6 +12,7 @@ use crate::units::{length_px, Scale};
 use crate::viewport;
 use kurbo::Affine;
 use roxmltree::{Document, Node};
+use std::collections::HashSet;
 use std::fmt::Write;
 
 pub const SVG_NS: &str = "http://www.w3.org/2000/svg";
@@ -178,6 +179,19 @@ impl<'input> SvgFile<'input> {
     /// The shapes with these ids, in this order: only they (and their ancestors) are read and
     /// checked, so an unreadable shape elsewhere in the file does not matter.
     pub fn shapes_by_id(&self, ids: &[String]) -> Result<Vec<Shape<'_, 'input>>, String> {
+        // The same shape twice would be one piece used as both (normalize then edited it twice
+        // and stopped with an internal error; connect wrote every connector id twice).
+        if let Some((k, id)) = ids
+            .iter()
+            .enumerate()
+            .find(|(k, id)| ids[..*k].contains(id))
+        {
+            return Err(format!(
+                "--id \"{id}\" is given twice (choice {} and {}); each piece is a different shape",
+                ids.iter().position(|x| x == id).unwrap_or(0) + 1,
+                k + 1
+            ));
+        }
         let found = self.found();
         ids.iter()
             .map(|id| {
@@ -198,7 +212,16 @@ impl<'input> SvgFile<'input> {
         let mut counter = 0usize;
         // Inkscape 1.2 ignores `transform` on <svg> elements (the root's included).
         let size = viewport::page_size(root);
-        walk(root, Ok(Affine::IDENTITY), size, &mut out, &mut counter);
+        let taken: HashSet<&str> = root
+            .descendants()
+            .filter_map(|n| n.attribute("id"))
+            .collect();
+        let mut walker = Walker {
+            out: &mut out,
+            counter: &mut counter,
+            taken: &taken,
+        };
+        walker.walk(root, Ok(Affine::IDENTITY), size);
         out
     }
 }
@@ -230,59 +253,64 @@ impl<'a, 'input> Found<'a, 'input> {
     }
 }
 
-fn walk<'a, 'input>(
-    node: Node<'a, 'input>,
-    ctm: Result<Affine, String>,
-    size: (f64, f64),
-    out: &mut Vec<Found<'a, 'input>>,
-    counter: &mut usize,
-) {
-    for child in node
-        .children()
-        .filter(|c| c.is_element() && c.tag_name().namespace() == Some(SVG_NS))
-    {
-        let tag = child.tag_name().name();
-        if NOT_DRAWN.contains(&tag)
-            || child
-                .attribute("id")
-                .is_some_and(|id| id.starts_with(OWN_PREFIX))
+/// The tree walk's state: what it found, the number of shapes so far, every id in the file (a
+/// shape without an id gets a stand-in key, `shape3`, that no element uses: D-former's group
+/// ids are made from it, and a shared key wrote duplicate ids).
+struct Walker<'w, 'a, 'input> {
+    out: &'w mut Vec<Found<'a, 'input>>,
+    counter: &'w mut usize,
+    taken: &'w HashSet<&'w str>,
+}
+
+impl<'w, 'a, 'input> Walker<'w, 'a, 'input> {
+    fn walk(&mut self, node: Node<'a, 'input>, ctm: Result<Affine, String>, size: (f64, f64)) {
+        for child in node
+            .children()
+            .filter(|c| c.is_element() && c.tag_name().namespace() == Some(SVG_NS))
         {
-            continue;
-        }
-        let what = match child.attribute("id") {
-            Some(id) => format!("#{id}"),
-            None => format!("<{tag}> number {}", *counter + 1),
-        };
-        if SHAPES.contains(&tag) {
-            *counter += 1;
-            let key = child
-                .attribute("id")
-                .map(str::to_string)
-                .unwrap_or_else(|| format!("shape{}", *counter));
-            out.push(Found {
-                node: child,
-                name: what,
-                key,
-                ctm: ctm.clone(),
-            });
-        } else if tag == "svg" {
-            match viewport::nested(child, size) {
-                Ok((map, inner)) => walk(child, ctm.clone().map(|m| m * map), inner, out, counter),
-                Err(e) => walk(
-                    child,
-                    Err(ctm.clone().err().unwrap_or(e)),
-                    size,
-                    out,
-                    counter,
-                ),
+            let tag = child.tag_name().name();
+            if NOT_DRAWN.contains(&tag)
+                || child
+                    .attribute("id")
+                    .is_some_and(|id| id.starts_with(OWN_PREFIX))
+            {
+                continue;
             }
-        } else {
-            let local = ctm.clone().and_then(|m| {
-                transform_of(child)
-                    .map(|t| m * t)
-                    .map_err(|e| format!("{what}, whose {e}"))
-            });
-            walk(child, local, size, out, counter);
+            let what = match child.attribute("id") {
+                Some(id) => format!("#{id}"),
+                None => format!("<{tag}> number {}", *self.counter + 1),
+            };
+            if SHAPES.contains(&tag) {
+                *self.counter += 1;
+                let key = child
+                    .attribute("id")
+                    .map(str::to_string)
+                    .unwrap_or_else(|| {
+                        let mut key = format!("shape{}", *self.counter);
+                        while self.taken.contains(key.as_str()) {
+                            key.push('_');
+                        }
+                        key
+                    });
+                self.out.push(Found {
+                    node: child,
+                    name: what,
+                    key,
+                    ctm: ctm.clone(),
+                });
+            } else if tag == "svg" {
+                match viewport::nested(child, size) {
+                    Ok((map, inner)) => self.walk(child, ctm.clone().map(|m| m * map), inner),
+                    Err(e) => self.walk(child, Err(ctm.clone().err().unwrap_or(e)), size),
+                }
+            } else {
+                let local = ctm.clone().and_then(|m| {
+                    transform_of(child)
+                        .map(|t| m * t)
+                        .map_err(|e| format!("{what}, whose {e}"))
+                });
+                self.walk(child, local, size);
+            }
         }
     }
 }
@@ -359,6 +387,30 @@ mod tests {
             file.shapes().unwrap_err().contains("#r1"),
             "without ids every shape is read"
         );
+    }
+
+    #[test]
+    fn a_shape_chosen_twice_is_refused_by_name() {
+        let text = r#"<svg xmlns="http://www.w3.org/2000/svg"><rect id="a" width="1" height="1"/><rect id="b" width="1" height="1"/></svg>"#;
+        let file = SvgFile::parse(text, None).unwrap();
+        let err = file
+            .shapes_by_id(&["a".into(), "b".into(), "a".into()])
+            .err()
+            .unwrap_or_default();
+        assert!(
+            err.contains("--id \"a\" is given twice (choice 1 and 3)"),
+            "got {err:?}"
+        );
+    }
+
+    #[test]
+    fn a_shape_without_id_never_takes_another_elements_id_as_its_key() {
+        // The stand-in `shape1` of the first rect was #shape1's id too, so connect wrote
+        // `dformer-cut-shape1` (and every hole id) twice.
+        let text = r#"<svg xmlns="http://www.w3.org/2000/svg"><rect width="1" height="1"/><rect id="shape1" width="1" height="1"/></svg>"#;
+        let file = SvgFile::parse(text, None).unwrap();
+        let keys: Vec<String> = file.shapes().unwrap().into_iter().map(|s| s.key).collect();
+        assert_eq!(keys, ["shape1_", "shape1"]);
     }
 
     #[test]

@@ -84,20 +84,23 @@ impl Scale {
         user * self.px_per_user / px_per(&self.unit).unwrap_or(1.0)
     }
 
-    /// A length given by the user (`3mm`, `0.1in`, or a bare number in the display unit) →
-    /// user units.
-    pub fn parse_user(&self, text: &str) -> Result<f64, String> {
+    /// A length given by the user (`3mm`, `0.1in`, or a bare number in the display unit) → the
+    /// display unit (what the core works in, so that its messages speak the user's unit).
+    pub fn parse(&self, text: &str) -> Result<f64, String> {
         let len: Length = text
             .trim()
             .parse()
             .map_err(|_| format!("`{text}` is not a length (e.g. 3, 3mm, 0.1in)"))?;
         let unit = match len.unit {
-            LengthUnit::None => self.unit.as_str(),
+            LengthUnit::None => return Ok(len.number),
             other => unit_name(other).ok_or_else(|| {
                 format!("`{text}`: use an absolute unit (mm, cm, in, pt, pc, px)")
             })?,
         };
-        Ok(len.number * px_per(unit).unwrap_or(1.0) / self.px_per_user)
+        if unit == self.unit {
+            return Ok(len.number);
+        }
+        Ok(len.number * px_per(unit).unwrap_or(1.0) / px_per(&self.unit).unwrap_or(1.0))
     }
 }
 
@@ -115,12 +118,18 @@ mod tests {
             s.to_unit(10.0)
         );
         assert!(
-            (s.parse_user("1in").unwrap() - 25.4).abs() < 1e-12,
-            "wanted 25.4 user units per inch"
+            (s.parse("1in").unwrap() - 25.4).abs() < 1e-12,
+            "wanted 25.4 mm per inch"
         );
-        assert!(
-            (s.parse_user("3").unwrap() - 3.0).abs() < 1e-12,
+        assert_eq!(
+            s.parse("3").unwrap(),
+            3.0,
             "bare numbers are in the display unit"
+        );
+        assert_eq!(
+            s.parse("-1mm").unwrap(),
+            -1.0,
+            "the display unit is not converted"
         );
     }
 
@@ -132,9 +141,14 @@ mod tests {
             "wanted 96 px = 25.4 mm, got {}",
             s.to_unit(96.0)
         );
+        assert_eq!(
+            s.parse("25.4").unwrap(),
+            25.4,
+            "lengths are read in the display unit"
+        );
         assert!(
-            (s.parse_user("25.4").unwrap() - 96.0).abs() < 1e-12,
-            "25.4 mm = 96 px"
+            (s.parse("96px").unwrap() - 25.4).abs() < 1e-12,
+            "96 px = 25.4 mm"
         );
     }
 
@@ -145,6 +159,6 @@ mod tests {
         assert!((s.to_unit(10.0) - 1.0).abs() < 1e-12);
         let e = Scale::new(1.0, None, None, Some("furlong")).unwrap_err();
         assert!(e.contains("furlong") && e.contains("mm"), "got {e}");
-        assert!(s.parse_user("5%").unwrap_err().contains("absolute unit"));
+        assert!(s.parse("5%").unwrap_err().contains("absolute unit"));
     }
 }

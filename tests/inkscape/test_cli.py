@@ -136,6 +136,9 @@ class Batch(unittest.TestCase):
             (["connect", os.path.join(DATA, "pieces_mm.svg"), "--id", "A", "--id", "C"], "Normalize them first"),
             (["normalize", os.path.join(DATA, "pieces_mm.svg"), "--id", "nope"], 'no shape with id "nope"'),
             (["normalize", os.path.join(DATA, "pieces_mm.svg"), "--target", "12furlongs"], "--target"),
+            # The same shape twice: normalize stopped with "internal error: overlapping edits".
+            (["normalize", os.path.join(DATA, "pieces_mm.svg"), "--id", "A", "--id", "B", "--id", "A"], '--id "A" is given twice'),
+            (["connect", os.path.join(DATA, "connect_mm.svg"), "--id", "A", "--id", "A", "--count", "6"], '--id "A" is given twice'),
         ]
         for args, wanted in cases:
             with self.subTest(args=args):
