@@ -17,7 +17,9 @@ fn dist(a: P, b: P) -> f64 {
 }
 
 /// Nearest point of the outline to `q`: (distance, segment, parameter), from a dense sampling
-/// refined by Newton's method on (B(t) − q)·B'(t) = 0.
+/// refined by Newton's method on (B(t) − q)·B'(t) = 0 — in the nearest sample's segment and in
+/// its two neighbours, since a foot point just past an anchor is found only in the next segment
+/// (clamped at the anchor, it is off along the curve while its distance is right to second order).
 fn nearest(segs: &[Cubic], q: P) -> (f64, usize, f64) {
     const SAMPLES: usize = 64;
     let mut best = (f64::INFINITY, 0, 0.0);
@@ -30,18 +32,24 @@ fn nearest(segs: &[Cubic], q: P) -> (f64, usize, f64) {
             }
         }
     }
-    let (_, i, mut t) = best;
-    let c = &segs[i];
-    for _ in 0..30 {
-        let (b, d, d2) = (eval(c, t), deriv(c, t), deriv2(c, t));
-        let g = (b[0] - q[0]) * d[0] + (b[1] - q[1]) * d[1];
-        let gp = d[0] * d[0] + d[1] * d[1] + (b[0] - q[0]) * d2[0] + (b[1] - q[1]) * d2[1];
-        if gp <= 0.0 {
-            break;
+    let refine = |i: usize, mut t: f64| {
+        let c = &segs[i];
+        for _ in 0..50 {
+            let (b, d, d2) = (eval(c, t), deriv(c, t), deriv2(c, t));
+            let g = (b[0] - q[0]) * d[0] + (b[1] - q[1]) * d[1];
+            let gp = d[0] * d[0] + d[1] * d[1] + (b[0] - q[0]) * d2[0] + (b[1] - q[1]) * d2[1];
+            if gp <= 0.0 {
+                break;
+            }
+            t = (t - g / gp).clamp(0.0, 1.0);
         }
-        t = (t - g / gp).clamp(0.0, 1.0);
-    }
-    (dist(eval(c, t), q), i, t)
+        (dist(eval(c, t), q), i, t)
+    };
+    let n = segs.len();
+    let (_, i, t) = best;
+    [refine(i, t), refine((i + n - 1) % n, 1.0), refine((i + 1) % n, 0.0)]
+        .into_iter()
+        .fold((f64::INFINITY, 0, 0.0), |m, r| if r.0 < m.0 { r } else { m })
 }
 
 /// Even–odd inside test against a dense polygon of the outline (for points well off the edge).
