@@ -16,38 +16,55 @@ fn dist(a: P, b: P) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
-/// Nearest point of the outline to `q`: (distance, segment, parameter), from a dense sampling
-/// refined by Newton's method on (B(t) − q)·B'(t) = 0 — in the nearest sample's segment and in
-/// its two neighbours, since a foot point just past an anchor is found only in the next segment
-/// (clamped at the anchor, it is off along the curve while its distance is right to second order).
+/// Nearest point of the outline to `q`: (distance, segment, parameter). The nearest of a dense
+/// sampling brackets it to one sample step; a golden-section search on the distance then finds it
+/// in that bracket and at the ends of the two neighbouring segments (a foot just past an anchor,
+/// or one where the curve bends sharply, is missed by a search confined to one segment or by
+/// Newton's method alone, while its distance is right to second order), and Newton's method
+/// polishes it.
 fn nearest(segs: &[Cubic], q: P) -> (f64, usize, f64) {
     const SAMPLES: usize = 64;
+    let step = 1.0 / SAMPLES as f64;
     let mut best = (f64::INFINITY, 0, 0.0);
     for (i, c) in segs.iter().enumerate() {
         for s in 0..=SAMPLES {
-            let t = s as f64 / SAMPLES as f64;
+            let t = s as f64 * step;
             let d = dist(eval(c, t), q);
             if d < best.0 {
                 best = (d, i, t);
             }
         }
     }
-    let refine = |i: usize, mut t: f64| {
+    let golden = |i: usize, lo: f64, hi: f64| {
         let c = &segs[i];
-        for _ in 0..50 {
-            let (b, d, d2) = (eval(c, t), deriv(c, t), deriv2(c, t));
-            let g = (b[0] - q[0]) * d[0] + (b[1] - q[1]) * d[1];
-            let gp = d[0] * d[0] + d[1] * d[1] + (b[0] - q[0]) * d2[0] + (b[1] - q[1]) * d2[1];
-            if gp <= 0.0 {
+        let r = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut a, mut b) = (lo.max(0.0), hi.min(1.0));
+        for _ in 0..200 {
+            let (x1, x2) = (b - r * (b - a), a + r * (b - a));
+            if dist(eval(c, x1), q) <= dist(eval(c, x2), q) {
+                b = x2;
+            } else {
+                a = x1;
+            }
+        }
+        // The distance is flat at its minimum, so the search finds t only to ~1e-8; the root of
+        // (B(t) − q)·B'(t), which crosses zero there, is polished by Newton's method.
+        let mut t = 0.5 * (a + b);
+        for _ in 0..20 {
+            let (p, d, d2) = (eval(c, t), deriv(c, t), deriv2(c, t));
+            let g = (p[0] - q[0]) * d[0] + (p[1] - q[1]) * d[1];
+            let gp = d[0] * d[0] + d[1] * d[1] + (p[0] - q[0]) * d2[0] + (p[1] - q[1]) * d2[1];
+            let next = t - g / gp;
+            if !(gp > 0.0) || !(lo.max(0.0)..=hi.min(1.0)).contains(&next) {
                 break;
             }
-            t = (t - g / gp).clamp(0.0, 1.0);
+            t = next;
         }
         (dist(eval(c, t), q), i, t)
     };
     let n = segs.len();
     let (_, i, t) = best;
-    [refine(i, t), refine((i + n - 1) % n, 1.0), refine((i + 1) % n, 0.0)]
+    [golden(i, t - step, t + step), golden((i + n - 1) % n, 1.0 - step, 1.0), golden((i + 1) % n, 0.0, step)]
         .into_iter()
         .fold((f64::INFINITY, 0, 0.0), |m, r| if r.0 < m.0 { r } else { m })
 }
