@@ -6,33 +6,11 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { openApp, usePanelBrowser, waitReady } from './support.mjs';
+import { meshVolume, objTriangles, stlTriangles } from './mesh.mjs';
 
 const panel = usePanelBrowser();
 
 /** Enclosed volume of a closed triangle soup (divergence theorem), in the file's own units³. */
-function volume(triangles) {
-  let v = 0;
-  for (const [a, b, c] of triangles) {
-    v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
-  }
-  return Math.abs(v);
-}
-function stlTriangles(text) {
-  const v = [...text.matchAll(/^\s*vertex (\S+) (\S+) (\S+)/gm)].map((m) => [Number(m[1]), Number(m[2]), Number(m[3])]);
-  const t = [];
-  for (let i = 0; i < v.length; i += 3) t.push([v[i], v[i + 1], v[i + 2]]);
-  return t;
-}
-function objTriangles(text) {
-  const v = [];
-  const t = [];
-  for (const line of text.split('\n')) {
-    const p = line.trim().split(/\s+/);
-    if (p[0] === 'v') v.push(p.slice(1, 4).map(Number));
-    if (p[0] === 'f') t.push(p.slice(1, 4).map((x) => v[Number(x.split('/')[0]) - 1]));
-  }
-  return t;
-}
 const number = (s) => Number(s.replace(/,/g, ''));
 
 test('with inches chosen, STL and OBJ are still in millimetres (volume = litres shown × 10⁶ mm³)', async (t) => {
@@ -51,14 +29,14 @@ test('with inches chosen, STL and OBJ are still in millimetres (volume = litres 
 
   const [stlDl] = await Promise.all([page.waitForEvent('download'), page.click('#export-stl')]);
   assert.match(stlDl.suggestedFilename(), /mm/, `the file name says the unit: ${stlDl.suggestedFilename()}`);
-  const stlVolume = volume(stlTriangles(readFileSync(await stlDl.path(), 'utf8')));
+  const stlVolume = Math.abs(meshVolume(stlTriangles(readFileSync(await stlDl.path(), 'utf8'))));
   assert.ok(Math.abs(stlVolume / 1e6 - litres) <= 0.005 * litres + 0.001, `STL volume ${stlVolume} mm³ vs ${litres} L shown`);
   assert.ok(Math.abs(stlVolume - cubicInches * 25.4 ** 3) <= 0.005 * stlVolume, `STL volume ${stlVolume} mm³ vs ${cubicInches} in³ shown`);
 
   const [objDl] = await Promise.all([page.waitForEvent('download'), page.click('#export-obj')]);
   const obj = readFileSync(await objDl.path(), 'utf8');
   assert.match(obj, /^# .*units: mm/m, 'the OBJ header names its unit');
-  const objVolume = volume(objTriangles(obj));
+  const objVolume = Math.abs(meshVolume(objTriangles(obj)));
   assert.ok(Math.abs(objVolume / 1e6 - litres) <= 0.005 * litres + 0.001, `OBJ volume ${objVolume} mm³ vs ${litres} L shown`);
   assert.match(await page.textContent('#status'), /mm/, 'the status line says the export is in mm');
   await page.close();

@@ -8,6 +8,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { artifactPath, openApp, openSvgFiles, usePanelBrowser } from './support.mjs';
+import { meshArea, objTriangles } from './mesh.mjs';
 
 const panel = usePanelBrowser();
 
@@ -15,21 +16,6 @@ const svg = (shape) => `<svg xmlns="http://www.w3.org/2000/svg" width="300mm" he
   `<circle cx="220" cy="75" r="${200 / (2 * Math.PI)}"/></svg>`;
 const CIRCLE_AREA = (200 * 200) / (4 * Math.PI); // mm², perimeter 200 mm
 
-function meshArea(objText) {
-  const v = [];
-  let area = 0;
-  for (const line of objText.split('\n')) {
-    const p = line.trim().split(/\s+/);
-    if (p[0] === 'v') v.push(p.slice(1, 4).map(Number));
-    if (p[0] === 'f') {
-      const [a, b, c] = p.slice(1, 4).map((x) => v[Number(x.split('/')[0]) - 1]);
-      const u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-      const w = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-      area += Math.hypot(u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]) / 2;
-    }
-  }
-  return area;
-}
 
 async function open3d(name, rect) {
   const page = await openApp(panel);
@@ -38,7 +24,7 @@ async function open3d(name, rect) {
   await page.waitForFunction(() => document.body.dataset.solve && !document.body.dataset.solving, null, { timeout: 30000 });
   assert.equal(await page.evaluate(() => document.body.dataset.solve), 'ok', await page.textContent('#stats3d'));
   const [dl] = await Promise.all([page.waitForEvent('download'), page.click('#export-obj')]);
-  return { page, area: meshArea(readFileSync(await dl.path(), 'utf8')) };
+  return { page, area: meshArea(objTriangles(readFileSync(await dl.path(), 'utf8'))) };
 }
 
 test('3D tab: a form the solver cannot realize is clearly marked approximate; a realized one is not', async () => {

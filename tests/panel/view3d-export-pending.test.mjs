@@ -7,6 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { openApp, openSvgFiles, usePanelBrowser } from './support.mjs';
+import { meshVolume, objTriangles } from './mesh.mjs';
 
 const panel = usePanelBrowser();
 
@@ -14,19 +15,6 @@ const SVG = '<svg xmlns="http://www.w3.org/2000/svg" width="300mm" height="150mm
   `<rect x="45" y="50" width="55" height="45"/><circle cx="220" cy="75" r="${200 / (2 * Math.PI)}"/></svg>`;
 const PT3_TO_MM3 = Math.pow(25.4 / 72, 3);
 
-function objVolume(text) {
-  const v = [];
-  let vol = 0;
-  for (const line of text.split('\n')) {
-    const p = line.trim().split(/\s+/);
-    if (p[0] === 'v') v.push(p.slice(1, 4).map(Number));
-    if (p[0] === 'f') {
-      const [a, b, c] = p.slice(1, 4).map((x) => v[Number(x.split('/')[0]) - 1]);
-      vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
-    }
-  }
-  return vol;
-}
 
 test('3D tab: OBJ clicked while the slider\'s new position is still solving exports the new position\'s form', async () => {
   const page = await openApp(panel);
@@ -48,7 +36,7 @@ test('3D tab: OBJ clicked while the slider\'s new position is still solving expo
   });
   await page.waitForFunction(() => document.body.dataset.solving === 'yes');
   const [dl] = await Promise.all([page.waitForEvent('download', { timeout: 30000 }), page.click('#export-obj')]);
-  const got = objVolume(readFileSync(await dl.path(), 'utf8'));
+  const got = meshVolume(objTriangles(readFileSync(await dl.path(), 'utf8')));
   assert.equal(await page.$eval('#offset3d', (el) => el.value), '800');
   assert.ok(Math.abs(got - wanted) <= 1e-4 * Math.abs(wanted) + 0.01,
     `exported volume ${got.toFixed(2)} mm³: the form at the slider's position has ${wanted.toFixed(2)}, the previous position's ${before.toFixed(2)}`);

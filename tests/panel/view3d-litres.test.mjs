@@ -5,22 +5,10 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { openApp, openSvgFiles, usePanelBrowser } from './support.mjs';
+import { meshVolume, objTriangles } from './mesh.mjs';
 
 const panel = usePanelBrowser();
 
-function objVolume(text) {
-  const v = [];
-  let vol = 0;
-  for (const line of text.split('\n')) {
-    const p = line.trim().split(/\s+/);
-    if (p[0] === 'v') v.push(p.slice(1, 4).map(Number));
-    if (p[0] === 'f') {
-      const [a, b, c] = p.slice(1, 4).map((x) => v[Number(x.split('/')[0]) - 1]);
-      vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
-    }
-  }
-  return vol;
-}
 
 test('3D tab: the litres shown agree with the exported mesh to 3 significant digits', async () => {
   const page = await openApp(panel);
@@ -33,7 +21,7 @@ test('3D tab: the litres shown agree with the exported mesh to 3 significant dig
   const m = /\(([\d,.]+) L\)/.exec(stats);
   assert.ok(m, stats);
   const [dl] = await Promise.all([page.waitForEvent('download'), page.click('#export-obj')]);
-  const litres = objVolume(readFileSync(await dl.path(), 'utf8')) / 1e6;
+  const litres = meshVolume(objTriangles(readFileSync(await dl.path(), 'utf8'))) / 1e6;
   const shown = Number(m[1].replace(/,/g, ''));
   assert.ok(Math.abs(shown - litres) <= 0.005 * litres, `shown ${m[1]} L, mesh holds ${litres.toFixed(5)} L`);
   await page.close();

@@ -13,18 +13,7 @@
 
 use super::metric::{self, Triangulation};
 use super::seam::SeamPieces;
-
-type V3 = [f64; 3];
-
-fn sub(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: V3, b: V3) -> V3 {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
+use super::solver::{cross, dot, sub, V3};
 
 /// Largest number of seam vertices [`triangulations`] is tried on.
 pub const MAX_VERTICES: usize = 64;
