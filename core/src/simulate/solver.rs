@@ -40,7 +40,7 @@ pub(super) fn dot(a: V3, b: V3) -> f64 {
 pub(super) fn cross(a: V3, b: V3) -> V3 {
     [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 }
-fn norm(a: V3) -> f64 {
+pub(super) fn norm(a: V3) -> f64 {
     dot(a, a).sqrt()
 }
 
@@ -77,6 +77,16 @@ fn bars(pieces: &SeamPieces, tri: &[Triangulation; 2]) -> Vec<Bar> {
 /// Sum of squared relative residuals `(|x_i − x_j| / d − 1)²`.
 fn cost(x: &[V3], bars: &[Bar]) -> f64 {
     bars.iter().map(|b| (norm(sub(x[b.j], x[b.i])) / b.d - 1.0).powi(2)).sum()
+}
+
+/// Mirrors the positions (z → −z, an isometry) when the mesh is inside out, so that A's triangles
+/// as they are and B's reversed face outward.
+pub(super) fn make_outward(x: &mut [V3], tri: &[Triangulation; 2]) {
+    if signed_volume(x, tri) < 0.0 {
+        for p in x.iter_mut() {
+            p[2] = -p[2];
+        }
+    }
 }
 
 /// Signed volume of the closed mesh (A's triangles as they are, B's reversed).
@@ -144,10 +154,8 @@ fn flip_pass(
     count: &mut [HashMap<(usize, usize), u8>; 2],
     orientation: Orientation,
 ) -> usize {
-    if orientation == Orientation::Free && signed_volume(x, tri) < 0.0 {
-        for p in x.iter_mut() {
-            p[2] = -p[2];
-        }
+    if orientation == Orientation::Free {
+        make_outward(x, tri);
     }
     let mut flips = 0;
     for p in 0..2 {

@@ -2,7 +2,7 @@
 //! returned mesh against the flat pieces, independently of the solver's own residuals.
 
 use super::seam::SeamPieces;
-use super::solver::{map_affine, reflex_sine, signed_volume, Solution};
+use super::solver::{cross, dot, make_outward, map_affine, norm, reflex_sine, signed_volume, sub, Solution, V3};
 use super::Simulation;
 use std::f64::consts::TAU;
 
@@ -36,19 +36,6 @@ pub struct Stats {
     pub ms: f64,
 }
 
-type V3 = [f64; 3];
-fn sub(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn norm(a: V3) -> f64 {
-    dot(a, a).sqrt()
-}
-fn cross(a: V3, b: V3) -> V3 {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
 
 /// Angle at `a` in triangle (a, b, c), robust near 0 and π.
 fn angle(a: V3, b: V3, c: V3) -> f64 {
@@ -64,11 +51,7 @@ pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
     // Outward triangles, as promised: the solver keeps a converged shape outward, but a gluing it
     // cannot realize (strongly non-convex pieces) may end inside out. Its mirror image, an
     // isometry, is the same approximation seen with the drawn faces outside.
-    if signed_volume(&x, &sol.tri) < 0.0 {
-        for p in &mut x {
-            p[2] = -p[2];
-        }
-    }
+    make_outward(&mut x, &sol.tri);
 
     let mut triangles = Vec::with_capacity(2 * n);
     let mut piece = Vec::with_capacity(2 * n);
