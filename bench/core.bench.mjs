@@ -127,6 +127,19 @@ function rosette(n) {
   console.log(`  rosette (1,000 strongly bent segments): kernel ${us(msK2)} (error ${errK2.toExponential(2)}), Simpson ${us(msS2)} (error ${errS2.toExponential(2)}), speed-up ${(msS2 / msK2).toFixed(1)}×`);
 }
 
+// The ceiling of the ratio: a loop that only sums each segment's chord (one square root per
+// segment, the curve ignored) does less work than any arc-length method can, since even a straight
+// segment's length costs a square root. Simpson divided by this loop bounds every method's speed-up.
+{
+  const chords = (ss) => {
+    let s = 0;
+    for (const c of ss) { const x = c[3][0] - c[0][0], y = c[3][1] - c[0][1]; s += Math.sqrt(x * x + y * y); }
+    return s;
+  };
+  const msC = timeIt(() => chords(segs));
+  console.log(`  ceiling: chords only (1 square root per segment, no curve): ${us(msC)}; Simpson / that = ${(msS / msC).toFixed(1)}×, the most any method could gain on this path`);
+}
+
 // What the speed-up means at equal accuracy: the same Simpson asked for the kernel's 1e-12.
 {
   const tol = (1e-12 * truth) / N; // per segment, so the path is within 1e-12 relative
