@@ -189,22 +189,60 @@
     }
     return false;
   }
-  /** Root matrix: user units → points (viewBox and physical width/height), then y flipped to y up. */
-  function rootMatrix(svg, px) {
-    var vb = (svg.getAttribute('viewBox') || '').trim().split(/[\s,]+/).map(Number);
-    var sx = px;
-    var sy = px;
+  /**
+   * Root matrix: user units → points, then y flipped to y up. The page is the viewBox fitted into
+   * the physical width × height by preserveAspectRatio, as every SVG viewer draws it (a percentage
+   * is a share of the viewBox's size in px, as Inkscape reads it; one side missing follows the
+   * viewBox's proportions, both missing are the viewBox's size in px). With `none`
+   * and unequal scales a length would depend on its direction, so a perimeter has no single value:
+   * refused, as the Inkscape extension and the CLI refuse it.
+   */
+  function rootMatrix(svg, px, fileName) {
+    var vb = viewBox(svg);
+    if (!vb) return [px, 0, 0, -px, 0, 0];
+    var size = [['width', vb[2]], ['height', vb[3]]].map(function (wh) {
+      var text = (svg.getAttribute(wh[0]) || '').trim();
+      if (!text || text === 'auto') return null;
+      var pct = /^([-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?)\s*%$/i.exec(text);
+      var v = pct ? (parseFloat(pct[1]) / 100) * wh[1] * px : lengthPt(text, px);
+      if (!(v > 0 && isFinite(v))) throw new Error(fileName + ': the page\'s ' + wh[0] + '="' + text + '" is not a positive length.');
+      return v;
+    });
+    // One side missing: the viewBox's proportions give it (as browsers size an SVG image).
+    var w = size[0] !== null ? size[0] : size[1] !== null ? (size[1] * vb[2]) / vb[3] : vb[2] * px;
+    var h = size[1] !== null ? size[1] : (w * vb[3]) / vb[2];
+    var fit = fitViewBox(vb, w, h, svg.getAttribute('preserveAspectRatio'));
+    if (fit.stretched && Math.abs(fit.sx - fit.sy) > 1e-9 * Math.max(fit.sx, fit.sy)) {
+      throw new Error(fileName + ': the page stretches the drawing unequally (preserveAspectRatio="none", ' +
+        +(fit.sx / px).toPrecision(6) + ' px per user unit across, ' + +(fit.sy / px).toPrecision(6) + ' down), so a length depends on its direction and a perimeter has no single value. ' +
+        'Make the page size proportional to the viewBox, or remove preserveAspectRatio.');
+    }
+    return [fit.sx, 0, 0, -fit.sy, fit.tx, -fit.ty];
+  }
+  /** The element's viewBox as [x, y, width, height], or null when it has none that SVG would use. */
+  function viewBox(el) {
+    var vb = (el.getAttribute('viewBox') || '').trim().split(/[\s,]+/).map(Number);
+    return vb.length === 4 && vb.every(isFinite) && vb[2] > 0 && vb[3] > 0 ? vb : null;
+  }
+  /**
+   * The viewBox `vb` fitted into a w × h viewport at the origin (SVG 1.1 §7.8, "the viewBox
+   * attribute" and preserveAspectRatio, default xMidYMid meet; unreadable values are the default):
+   * x ↦ sx·x + tx, y ↦ sy·y + ty; `stretched` for `none`, where sx and sy may differ.
+   */
+  function fitViewBox(vb, w, h, preserve) {
+    var par = /^\s*(?:defer\s+)?(none|x(Min|Mid|Max)Y(Min|Mid|Max))(?:\s+(meet|slice))?\s*$/.exec(preserve || '') ||
+      [null, 'xMidYMid', 'Mid', 'Mid', 'meet'];
+    var sx = w / vb[2];
+    var sy = h / vb[3];
     var tx = 0;
     var ty = 0;
-    if (vb.length === 4 && vb[2] > 0 && vb[3] > 0) {
-      var w = lengthPt(svg.getAttribute('width'), px);
-      var h = lengthPt(svg.getAttribute('height'), px);
-      sx = isFinite(w) && w > 0 ? w / vb[2] : px;
-      sy = isFinite(h) && h > 0 ? h / vb[3] : sx;
-      tx = -vb[0] * sx;
-      ty = -vb[1] * sy;
+    if (par[1] !== 'none') {
+      sx = sy = par[4] === 'slice' ? Math.max(sx, sy) : Math.min(sx, sy);
+      var k = { Min: 0, Mid: 0.5, Max: 1 };
+      tx = k[par[2]] * (w - vb[2] * sx);
+      ty = k[par[3]] * (h - vb[3] * sy);
     }
-    return [sx, 0, 0, -sy, tx, -ty];
+    return { sx: sx, sy: sy, tx: tx - vb[0] * sx, ty: ty - vb[1] * sy, stretched: par[1] === 'none' };
   }
   /** CSS px per unit: lengths on a nested <svg> are in its parent's user units (1 user unit = 1 px). */
   var CSS_PX = { px: 1, pt: 96 / 72, pc: 16, mm: 96 / 25.4, cm: 960 / 25.4, in: 96, '': 1 };
@@ -234,26 +272,15 @@
       throw new Error(fileName + ': cannot place ' + label + ' (its x, y, width or height is not a length, or is a percentage of a page that has no size).');
     }
     if (!(w > 0 && h > 0)) return null;
-    var vb = (el.getAttribute('viewBox') || '').trim().split(/[\s,]+/).map(Number);
-    if (!(vb.length === 4 && vb.every(isFinite) && vb[2] > 0 && vb[3] > 0)) return { m: [1, 0, 0, 1, x, y], size: [w, h] };
-    var par = /^\s*(?:defer\s+)?(none|x(Min|Mid|Max)Y(Min|Mid|Max))(?:\s+(meet|slice))?\s*$/.exec(el.getAttribute('preserveAspectRatio') || '') ||
-      [null, 'xMidYMid', 'Mid', 'Mid', 'meet'];
-    var sx = w / vb[2];
-    var sy = h / vb[3];
-    var tx = x;
-    var ty = y;
-    if (par[1] !== 'none') {
-      sx = sy = par[4] === 'slice' ? Math.max(sx, sy) : Math.min(sx, sy);
-      var k = { Min: 0, Mid: 0.5, Max: 1 };
-      tx += k[par[2]] * (w - vb[2] * sx);
-      ty += k[par[3]] * (h - vb[3] * sy);
-    }
-    return { m: [sx, 0, 0, sy, tx - vb[0] * sx, ty - vb[1] * sy], size: [vb[2], vb[3]] };
+    var vb = viewBox(el);
+    if (!vb) return { m: [1, 0, 0, 1, x, y], size: [w, h] };
+    var fit = fitViewBox(vb, w, h, el.getAttribute('preserveAspectRatio'));
+    return { m: [fit.sx, 0, 0, fit.sy, x + fit.tx, y + fit.ty], size: [vb[2], vb[3]] };
   }
   /** The root viewport's size in user units (its viewBox, else its width/height in px); NaN when unknown. */
   function rootSize(svg) {
-    var vb = (svg.getAttribute('viewBox') || '').trim().split(/[\s,]+/).map(Number);
-    if (vb.length === 4 && vb[2] > 0 && vb[3] > 0) return [vb[2], vb[3]];
+    var vb = viewBox(svg);
+    if (vb) return [vb[2], vb[3]];
     return [userLength(svg.getAttribute('width'), NaN, NaN), userLength(svg.getAttribute('height'), NaN, NaN)];
   }
   /** The unit the file was drawn in, for display ("mm" when it does not say). */
@@ -278,7 +305,7 @@
     var shapes = [];
     var skipped = [];
     var notes = [];
-    var root = rootMatrix(svg, fromIllustrator(doc, svg) ? 1 : CSS_PT.px);
+    var root = rootMatrix(svg, fromIllustrator(doc, svg) ? 1 : CSS_PT.px, fileName);
     (function walk(el, m, size) {
       for (var c = el.firstElementChild; c; c = c.nextElementSibling) {
         if (SKIP[c.localName] || hidden(c)) continue;
