@@ -520,6 +520,22 @@ var DFORMER_LAYER_DEFAULTS = {
   engrave: { name: "Engrave", color: [0, 0, 0], width: 0.072 }
 };
 
+/** Illustrator's type sizes in points (the Character panel's range); a label outside it would make
+ * Illustrator throw mid-write, so it is refused before anything is written. */
+var DFORMER_TYPE_SIZE = [0.1, 1296];
+
+/**
+ * What a piece puts on each role's layer: the group title and how many items it holds.
+ * @param {*} pc @returns {Array<{role: string, title: string, count: number}>}
+ */
+function dformer_jobs(pc) {
+  return [
+    { role: "cut", title: "connectors", count: pc.holes.length + (pc.outline ? 1 : 0) },
+    { role: "score", title: "marks", count: pc.marks.length },
+    { role: "engrave", title: "labels", count: pc.labels.length }
+  ];
+}
+
 /** @param {*} v @param {string} where @returns {number} */
 function dformer_finite(v, where) {
   if (typeof v !== "number" || !isFinite(v)) {
@@ -575,7 +591,9 @@ function dformer_plan(doc, req) {
     dformer_fail("The active document is \"" + doc.name + "\", not \"" + req.document + "\" where the paths were read; switch back or select the paths again.");
   }
   var labelSize = req.labelSize === undefined || req.labelSize === null ? 6 : dformer_finite(req.labelSize, "labelSize");
-  if (labelSize <= 0) dformer_fail("labelSize must be greater than 0, got " + labelSize + ".");
+  if (labelSize < DFORMER_TYPE_SIZE[0] || labelSize > DFORMER_TYPE_SIZE[1]) {
+    dformer_fail("labelSize must be from " + DFORMER_TYPE_SIZE[0] + " to " + DFORMER_TYPE_SIZE[1] + " pt (Illustrator's type sizes), got " + labelSize + ".");
+  }
 
   // Layers: defaults merged with the request.
   /** @type {Object<string, {name: string, color: Array<number>, width: number, layer: *, needed: boolean}>} */
@@ -657,7 +675,9 @@ function dformer_plan(doc, req) {
       if (!lb || typeof lb !== "object") dformer_fail(lw + ": expected {text, at, angle}.");
       if (typeof lb.text !== "string" && typeof lb.text !== "number") dformer_fail(lw + ": text must be a string.");
       var size = lb.size === undefined || lb.size === null ? labelSize : dformer_finite(lb.size, lw + " size");
-      if (size <= 0) dformer_fail(lw + ": size must be greater than 0, got " + size + ".");
+      if (size < DFORMER_TYPE_SIZE[0] || size > DFORMER_TYPE_SIZE[1]) {
+        dformer_fail(lw + ": size must be from " + DFORMER_TYPE_SIZE[0] + " to " + DFORMER_TYPE_SIZE[1] + " pt (Illustrator's type sizes), got " + size + ".");
+      }
       piece.labels.push({
         text: String(lb.text), at: dformer_pair(lb.at, lw + " at"),
         angle: lb.angle === undefined || lb.angle === null ? 0 : dformer_finite(lb.angle, lw + " angle"), size: size
@@ -695,7 +715,31 @@ function dformer_plan(doc, req) {
       dformer_fail("Layer \"" + L.name + "\" is " + (L.layer.locked ? "locked" : "hidden") + "; unlock and show it in the Layers panel, then apply again.");
     }
   }
-  return { updates: updates, pieces: pieces, layers: layers, replace: req.replace !== false };
+  // Replace: the pieces' previous groups, found now so that one Illustrator cannot remove stops
+  // Apply before anything is written (removed one by one at the end, a locked one would otherwise
+  // fail half way, after the others were gone).
+  var old = [];
+  if (req.replace !== false) {
+    for (var op = 0; op < pieces.length; op++) {
+      var jobs = dformer_jobs(pieces[op]);
+      for (var oj = 0; oj < jobs.length; oj++) {
+        var OL = layers[jobs[oj].role];
+        if (jobs[oj].count === 0 || !OL.layer) continue;
+        var gname = "D-former " + pieces[op].name + " " + jobs[oj].title;
+        for (var og = 0; og < OL.layer.groupItems.length; og++) {
+          var prev = OL.layer.groupItems[og];
+          if (prev.name !== gname || dformer_indexIn(old, prev) >= 0) continue;
+          var stuck = dformer_blocked(prev);
+          if (stuck) {
+            dformer_fail("The previous \"" + gname + "\" group on layer \"" + OL.name + "\" cannot be replaced because " + stuck +
+              ": unlock and show it (Object > Unlock All, Object > Show All), or delete it, then apply again. Nothing was changed.");
+          }
+          old.push(prev);
+        }
+      }
+    }
+  }
+  return { updates: updates, pieces: pieces, layers: layers, old: old };
 }
 
 /** Document.documentColorSpace is CMYK (File > Document Color Mode). @param {Document} doc @returns {boolean} */
@@ -787,7 +831,6 @@ function dformer_write(doc, plan) {
   var created = 0;
   var groupNames = [];
   var layerNames = [];
-  var old = [];
   // Layers.add() makes the new layer the current one; the student's next shape must still go
   // where they were drawing, not onto the laser's Engrave layer.
   /** @type {*} */
@@ -819,20 +862,11 @@ function dformer_write(doc, plan) {
     }
     for (var k = 0; k < plan.pieces.length; k++) {
       var pc = plan.pieces[k];
-      var jobs = [
-        { role: "cut", title: "connectors", count: pc.holes.length + (pc.outline ? 1 : 0) },
-        { role: "score", title: "marks", count: pc.marks.length },
-        { role: "engrave", title: "labels", count: pc.labels.length }
-      ];
+      var jobs = dformer_jobs(pc);
       for (var j = 0; j < jobs.length; j++) {
         if (jobs[j].count === 0) continue;
         var style = plan.layers[jobs[j].role];
         var gname = "D-former " + pc.name + " " + jobs[j].title;
-        if (plan.replace) {
-          for (var g = 0; g < style.layer.groupItems.length; g++) {
-            if (style.layer.groupItems[g].name === gname) old.push(style.layer.groupItems[g]);
-          }
-        }
         var group = style.layer.groupItems.add();
         journal.groups.push(group);
         group.name = gname;
@@ -848,7 +882,7 @@ function dformer_write(doc, plan) {
         }
       }
     }
-    for (var o = 0; o < old.length; o++) old[o].remove();
+    for (var o = 0; o < plan.old.length; o++) plan.old[o].remove();
   } catch (e) {
     var err = /** @type {*} */ (e);
     var undone = dformer_undo(journal);

@@ -299,6 +299,9 @@ test('an invalid apply changes nothing in the document and says what is wrong', 
     ['one-point hole', (p) => { p.pieces[0].holes[0] = { closed: true, points: [{ anchor: [0, 0] }] }; }, /holes\[0\]: a path needs at least 2 points, got 1/],
     ['label without text', (p) => { delete p.pieces[0].labels[0].text; }, /labels\[0\]: text must be a string/],
     ['duplicate piece names', (p) => { p.pieces[1].name = 'piece A'; }, /two pieces are both named "piece A"/],
+    // Illustrator throws past its type sizes mid-write (it used to be rolled back, not refused).
+    ['label size above Illustrator’s largest type', (p) => { p.labelSize = 1300; }, /^labelSize must be from 0\.1 to 1296 pt \(Illustrator's type sizes\), got 1300\.$/],
+    ['one label below Illustrator’s smallest type', (p) => { p.pieces[1].labels[0].size = 0.05; }, /pieces\[1\] \("piece B"\) labels\[0\]: size must be from 0\.1 to 1296 pt \(Illustrator's type sizes\), got 0\.05\./],
   ];
   for (const [what, spoil, message] of cases) {
     const h = twoShapes();
@@ -331,6 +334,25 @@ test('locked target layer or locked path: refused before any write', () => {
   r = call(h, 'dformer_apply', p);
   assert.match(r.error, /updates\[0\] \("A"\): cannot change the path because it is locked/);
   assert.deepEqual(h.snapshot(), before);
+});
+
+test('a locked or hidden previous D-former group: refused before any write, every old group kept (one used to be removed, then the locked one stopped Apply half way)', () => {
+  for (const [state, reason] of [['locked', 'it is locked'], ['hidden', 'it is hidden']]) {
+    const h = twoShapes();
+    const sel = call(h, 'dformer_selection');
+    const p = payloadFor(sel);
+    delete p.updates;
+    assert.equal(call(h, 'dformer_apply', p).ok, true);
+    const cut = h.doc.layers.getByName('Laser cut');
+    // The stacking order puts piece B's group above piece A's: A's is removed first, B's after.
+    cut.groupItems.getByName('D-former piece B connectors')[state] = true;
+    const before = h.snapshot();
+    const r = call(h, 'dformer_apply', p);
+    assert.equal(r.ok, false, `${state}: should be refused`);
+    assert.equal(r.error, `The previous "D-former piece B connectors" group on layer "Laser cut" cannot be replaced because ${reason}: ` +
+      'unlock and show it (Object > Unlock All, Object > Show All), or delete it, then apply again. Nothing was changed.');
+    assert.deepEqual(h.snapshot(), before, `${state}: document unchanged`);
+  }
 });
 
 test('if Illustrator throws midway, the bridge undoes what it wrote', () => {

@@ -311,6 +311,7 @@ export class Layer extends Node {
   }
   remove() {
     this.sim.hit('layer.remove');
+    this.assertWritable();
     const p = this._parent, list = p._layers;
     list.splice(list.indexOf(this), 1);
     const doc = this.document || p;
@@ -352,6 +353,7 @@ class PageItem extends Node {
   remove() {
     this.sim.hit(`${this._typename}.remove`);
     if (!this._parent) throw new Error('object has been removed');
+    this.assertWritable();
     const list = this._parent._items;
     list.splice(list.indexOf(this), 1);
     this._parent = null;
