@@ -109,7 +109,22 @@ impl Glue {
             let total = self.ta.total();
             let c = self.positions(n / 2);
             let next = |m: usize| if m + 1 < c.len() { c[m + 1] } else { total };
-            return (0..n).map(|k| if k % 2 == 0 { c[k / 2] } else { 0.5 * (c[k / 2] + next(k / 2)) }).collect();
+            let mut u: Vec<f64> = (0..n).map(|k| if k % 2 == 0 { c[k / 2] } else { 0.5 * (c[k / 2] + next(k / 2)) }).collect();
+            // A corner the coarser level had no free sample for (several corners within one of
+            // its steps) takes the new midpoint sample of its interval, if still free: every
+            // corner becomes a seam vertex once the level is fine enough, as without nesting.
+            let same = 1e-3 * total / n as f64;
+            let mut taken = vec![false; n];
+            for &corner in &self.corners {
+                let m = c.partition_point(|&x| x <= corner).saturating_sub(1);
+                let (lo, hi) = (c[m], next(m));
+                if corner - lo <= same || hi - corner <= same || taken[2 * m + 1] {
+                    continue;
+                }
+                u[2 * m + 1] = corner;
+                taken[2 * m + 1] = true;
+            }
+            return u;
         }
         let total = self.ta.total();
         let h = total / n as f64;
@@ -248,6 +263,31 @@ mod tests {
             let smooth = g.positions(n);
             // Nested levels take midpoints, equal to k·step up to round-off.
             assert!(smooth.iter().enumerate().all(|(k, &x)| (x - k as f64 * step).abs() <= 1e-12 * g.perimeter()), "n = {n}: a smooth gluing moved samples");
+        }
+    }
+
+    /// Regression (nested levels): a 48-gon has more corners than the coarsest level has samples;
+    /// the corners left over there must still become seam vertices at the finer levels.
+    #[test]
+    fn corners_beyond_the_coarsest_level_become_seam_vertices_at_finer_levels() {
+        let m = 48;
+        let r = 100.0 / (2.0 * m as f64 * (std::f64::consts::PI / m as f64).sin());
+        let poly = Contour::new(
+            (0..m).map(|i| Knot::corner(Point::new(r * (std::f64::consts::TAU * i as f64 / m as f64).cos(), r * (std::f64::consts::TAU * i as f64 / m as f64).sin()))).collect(),
+            0,
+        )
+        .unwrap();
+        let disc = circle(100.0);
+        let disc = disc.transformed(kurbo::Affine::scale(100.0 / ArcTable::new(&disc, 1e-13).total()));
+        let glue = Glue::new(&poly, &disc, 0.0).unwrap();
+        let step = 100.0 / m as f64;
+        for n in [128, 256] {
+            let u = glue.positions(n);
+            assert!(u.windows(2).all(|w| w[0] < w[1]) && u[n - 1] < glue.perimeter(), "n = {n}: positions not increasing");
+            for i in 0..m {
+                let c = i as f64 * step;
+                assert!(u.iter().any(|&x| (x - c).abs() < 1e-9), "n = {n}: corner {i} at {c} is not a seam vertex");
+            }
         }
     }
 
