@@ -363,3 +363,54 @@ fn cold_solve_converges_at_every_offset_for_ellipse_with_circle_and_two_ellipses
     assert!((hi - lo) / hi < 1e-2, "ellipse with circle: wanted one volume at every offset, got {ec_volumes:?}");
 }
 
+
+/// A w × h rectangle (corners), counter-clockwise from the origin.
+fn rectangle(w: f64, h: f64) -> Contour {
+    Contour::new([(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)].iter().map(|&(x, y)| Knot::corner(Point::new(x, y))).collect(), 0).unwrap()
+}
+
+/// Converged, isometric to 1e-3, closed and convex at 128 seam vertices, with the volume at 64
+/// within 2e-3 of it (the polyhedron's O(h²) discretization error).
+/// `convex`: the largest relative height of a vertex above a face plane allowed.
+fn assert_converges_with_circle(name: &str, piece: &Contour, convex: f64) {
+    let c = circle_arcs(16).transformed(Affine::scale(perimeter(piece) / perimeter(&circle_arcs(16))));
+    let s = run(piece, &c, 0.0, 128);
+    assert!(s.stats.converged, "{name}: wanted converged, got {:?}", s.stats);
+    assert!(s.stats.max_strain < 1e-3, "{name}: max strain: wanted < 1e-3, got {}", s.stats.max_strain);
+    assert_closed(&s);
+    let cv = convexity_violation(&s);
+    assert!(cv < convex, "{name}: a vertex lies {cv} (relative) outside a face plane: not convex");
+    let v64 = run(piece, &c, 0.0, 64).stats.volume;
+    let rel = (v64 - s.stats.volume).abs() / s.stats.volume;
+    assert!(rel < 2e-3, "{name}: volume 64 vs 128 seam vertices: {v64} vs {} ({rel:.1e})", s.stats.volume);
+}
+
+/// Regression: a 60×40 (and 57×43) rectangle glued to a circle ended on a wrong branch (strain
+/// 2–66 %): the ear-clipping strip held rectangle chords longer than the circle's between the
+/// same seam vertices (no isometric realization has such an edge), the solver only flipped when
+/// Levenberg–Marquardt had fully stalled (~500 steps on such a triangulation), and at 256 seam
+/// vertices a corner fell on another sample than one level down, leaving a dent that collinear
+/// samples kept from flipping.
+#[test]
+fn rectangle_60x40_with_circle_converges() {
+    assert_converges_with_circle("60×40", &rectangle(60.0, 40.0), 1e-5);
+    assert_converges_with_circle("57×43", &rectangle(57.0, 43.0), 1e-5);
+}
+
+/// Regression: a square (and a 52×48 rectangle) glued to a circle never converged: its fourfold
+/// symmetry gives the saddle start no height, and its D-form's seam has no saddle mode at all.
+#[test]
+fn square_with_circle_converges() {
+    // The square's D-form has wide flat regions; at 128 seam vertices the solver keeps a dozen
+    // folds between nearly coplanar triangles there (out-of-plane sine < 1e-2, a vertex ~2e-5 of
+    // the size above a face plane), gone at 256.
+    assert_converges_with_circle("50×50", &rectangle(50.0, 50.0), 1e-4);
+    assert_converges_with_circle("52×48", &rectangle(52.0, 48.0), 1e-5);
+}
+
+/// Regression: a stadium (60×40 with r = 19) glued to a circle ended collapsed (strain ~15 %,
+/// volume ≈ 0) for the same reason as the rectangles: chords that cannot be edges.
+#[test]
+fn stadium_with_circle_converges() {
+    assert_converges_with_circle("stadium", &rounded_rectangle(60.0, 40.0, 19.0), 1e-5);
+}

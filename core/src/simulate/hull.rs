@@ -8,42 +8,64 @@
 //! other way on B's. The local flips cannot always get there: near-square rectangles glued to a
 //! circle stall with every saddle start (strain 10–40 %), and converge from their hull.
 //!
-//! The hull is found by brute force (every triple whose plane has all points on one side,
-//! `O(n⁴)`), which is meant for the coarsest rungs only (32 seam vertices: ~10⁶ tests).
+//! The hull is incremental (`O(n·F)` plane tests, ~10⁵ at 256 seam vertices), so the restart
+//! is tried on every rung of the ladder; the brute-force hull it replaces (every triple whose
+//! plane has all points on one side, `O(n⁴)`) was limited to rungs of at most 64 vertices.
 
 use super::metric::{self, Triangulation};
 use super::seam::SeamPieces;
 use super::solver::{cross, dot, sub, V3};
 
-/// Largest number of seam vertices [`triangulations`] is tried on.
-pub const MAX_VERTICES: usize = 64;
-
-/// Outward faces `[i, j, k]` (counter-clockwise seen from outside, `i` the smallest index) of the
-/// convex hull of `x`: triples whose plane has no point more than a relative 1e-9 outside.
-/// Points that are coplanar on a face give overlapping triangles; [`triangulations`] then refuses.
+/// Outward faces `[i, j, k]` (counter-clockwise seen from outside) of the convex hull of `x`, by
+/// the incremental algorithm (Clarkson & Shor 1989; de Berg et al., *Computational Geometry*,
+/// ch. 11): from a tetrahedron of extreme points, each further point that sees some face (lies
+/// more than a relative 1e-9 above its plane) replaces the faces it sees by the cone from itself
+/// to their horizon. `O(n·F)` plane tests, `F ≤ 2n − 4`. A point on or within 1e-9 of the hull
+/// is left out; [`triangulations`] then refuses (every seam vertex must be a hull vertex).
 fn faces(x: &[V3]) -> Vec<[usize; 3]> {
     let n = x.len();
+    if n < 4 {
+        return Vec::new();
+    }
     let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n as f64, s[1] + p[1] / n as f64, s[2] + p[2] / n as f64]);
     let size = x.iter().map(|p| dot(sub(*p, c), sub(*p, c))).fold(0.0, f64::max).sqrt();
-    let mut out = Vec::new();
-    for i in 0..n {
-        for j in i + 1..n {
-            for k in i + 1..n {
-                if k == j {
-                    continue;
-                }
-                let nrm = cross(sub(x[j], x[i]), sub(x[k], x[i]));
-                let l = dot(nrm, nrm).sqrt();
-                if !(l > 1e-12 * size * size) {
-                    continue;
-                }
-                if (0..n).all(|m| dot(nrm, sub(x[m], x[i])) <= 1e-9 * size * l) {
-                    out.push([i, j, k]);
-                }
+    let eps = 1e-9 * size;
+    // Tetrahedron: the farthest point from x[0], the farthest from that line, the farthest from that plane.
+    let far = |f: &dyn Fn(V3) -> f64| (0..n).max_by(|&a, &b| f(x[a]).total_cmp(&f(x[b]))).unwrap_or(0);
+    let a = 0;
+    let b = far(&|p| dot(sub(p, x[a]), sub(p, x[a])));
+    let ab = sub(x[b], x[a]);
+    let c3 = far(&|p| { let q = cross(ab, sub(p, x[a])); dot(q, q) });
+    let nrm = cross(ab, sub(x[c3], x[a]));
+    let d = far(&|p| dot(nrm, sub(p, x[a])).abs());
+    let height = dot(nrm, sub(x[d], x[a]));
+    if height.abs() <= eps * dot(nrm, nrm).sqrt() || !height.is_finite() {
+        return Vec::new();
+    }
+    let (b, c3) = if height > 0.0 { (c3, b) } else { (b, c3) };
+    let mut fs: Vec<[usize; 3]> = vec![[a, b, c3], [a, d, b], [b, d, c3], [c3, d, a]];
+    let above = |f: &[usize; 3], p: V3| {
+        let m = cross(sub(x[f[1]], x[f[0]]), sub(x[f[2]], x[f[0]]));
+        dot(m, sub(p, x[f[0]])) > eps * dot(m, m).sqrt()
+    };
+    for p in 0..n {
+        if p == a || p == b || p == c3 || p == d {
+            continue;
+        }
+        let (seen, kept): (Vec<[usize; 3]>, Vec<[usize; 3]>) = fs.iter().partition(|f| above(f, x[p]));
+        if seen.is_empty() {
+            continue;
+        }
+        let mut edges: Vec<(usize, usize)> = seen.iter().flat_map(|f| (0..3).map(move |m| (f[m], f[(m + 1) % 3]))).collect();
+        edges.sort_unstable();
+        fs = kept;
+        for &(u, v) in &edges {
+            if edges.binary_search(&(v, u)).is_err() {
+                fs.push([u, v, p]);
             }
         }
     }
-    out
+    fs
 }
 
 /// A's and B's triangulations read off the convex hull of `x` (see the module docs), or `None`
@@ -51,11 +73,14 @@ fn faces(x: &[V3]) -> Vec<[usize; 3]> {
 /// inside the hull, coplanar points, a face across the seam, a chord outside a non-convex piece).
 pub fn triangulations(x: &[V3], pieces: &SeamPieces) -> Option<[Triangulation; 2]> {
     let n = pieces.n;
-    if x.len() != n || n > MAX_VERTICES {
+    if x.len() != n {
         return None;
     }
     let (mut a, mut b) = (Vec::new(), Vec::new());
-    for [i, j, k] in faces(x) {
+    for f in faces(x) {
+        // Smallest index first, cyclic order kept.
+        let m = (0..3).min_by_key(|&m| f[m]).unwrap_or(0);
+        let [i, j, k] = [f[m], f[(m + 1) % 3], f[(m + 2) % 3]];
         // Outward and counter-clockwise in index order: A's side. B's triangles are stored
         // counter-clockwise in B's (mirrored) flat piece, i.e. reversed.
         if j < k {
@@ -77,8 +102,8 @@ pub fn triangulations(x: &[V3], pieces: &SeamPieces) -> Option<[Triangulation; 2
         // seam polygon. Its triangles all counter-clockwise and tiling the polygon's area: flat,
         // without folds, so a triangulation of the piece.
         let mut directed: Vec<(usize, usize)> = tris.iter().flat_map(|t| (0..3).map(move |m| (t[m], t[(m + 1) % 3]))).collect();
-        let seam_ok = (0..n).all(|k| directed.contains(&(k, (k + 1) % n)));
         crate::order::sort_dedup_pairs(&mut directed);
+        let seam_ok = (0..n).all(|k| directed.binary_search(&(k, (k + 1) % n)).is_ok());
         if directed.len() != 3 * (n - 2) || !seam_ok {
             return None;
         }

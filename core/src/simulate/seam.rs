@@ -94,7 +94,38 @@ impl Glue {
     /// moves by at most one step and the positions stay strictly increasing; sample 0 stays at
     /// A's first anchor. A corner with no free sample near it (several corners within one step)
     /// keeps the step.
+    ///
+    /// Nested: for even `n` with `n/2` at least the solver's coarsest level, the samples are those
+    /// of `n/2` and the midpoints between them, so a corner is sample `2m` when it is sample `m`
+    /// one level down (samples then move by up to a step of the coarsest such level). The
+    /// solver's coarse-to-fine ladder needs this: when a corner fell on sample 2m + 1 at the finer
+    /// level (its own nearest), the coarse solution laid the corner's position onto a sample of a
+    /// straight side, whose chords cannot flip away from the resulting dent (their quads have
+    /// three collinear samples): a 57×43 rectangle with a circle converged at 128 seam vertices
+    /// and ended dented at 256.
     pub fn positions(&self, n: usize) -> Vec<f64> {
+        if n % 2 == 0 && n / 2 >= super::solver::COARSEST {
+            // Nested (see the docs above): the coarser level's samples and their midpoints.
+            let total = self.ta.total();
+            let c = self.positions(n / 2);
+            let next = |m: usize| if m + 1 < c.len() { c[m + 1] } else { total };
+            let mut u: Vec<f64> = (0..n).map(|k| if k % 2 == 0 { c[k / 2] } else { 0.5 * (c[k / 2] + next(k / 2)) }).collect();
+            // A corner the coarser level had no free sample for (several corners within one of
+            // its steps) takes the new midpoint sample of its interval, if still free: every
+            // corner becomes a seam vertex once the level is fine enough, as without nesting.
+            let same = 1e-3 * total / n as f64;
+            let mut taken = vec![false; n];
+            for &corner in &self.corners {
+                let m = c.partition_point(|&x| x <= corner).saturating_sub(1);
+                let (lo, hi) = (c[m], next(m));
+                if corner - lo <= same || hi - corner <= same || taken[2 * m + 1] {
+                    continue;
+                }
+                u[2 * m + 1] = corner;
+                taken[2 * m + 1] = true;
+            }
+            return u;
+        }
         let total = self.ta.total();
         let h = total / n as f64;
         let mut u: Vec<f64> = (0..n).map(|k| k as f64 * h).collect();
@@ -230,7 +261,33 @@ mod tests {
             let g = Glue::new(&rescaled, &rescaled, 17.0).unwrap();
             let step = g.perimeter() / n as f64;
             let smooth = g.positions(n);
-            assert!(smooth.iter().enumerate().all(|(k, &x)| x == k as f64 * step), "n = {n}: a smooth gluing moved samples");
+            // Nested levels take midpoints, equal to k·step up to round-off.
+            assert!(smooth.iter().enumerate().all(|(k, &x)| (x - k as f64 * step).abs() <= 1e-12 * g.perimeter()), "n = {n}: a smooth gluing moved samples");
+        }
+    }
+
+    /// Regression (nested levels): a 48-gon has more corners than the coarsest level has samples;
+    /// the corners left over there must still become seam vertices at the finer levels.
+    #[test]
+    fn corners_beyond_the_coarsest_level_become_seam_vertices_at_finer_levels() {
+        let m = 48;
+        let r = 100.0 / (2.0 * m as f64 * (std::f64::consts::PI / m as f64).sin());
+        let poly = Contour::new(
+            (0..m).map(|i| Knot::corner(Point::new(r * (std::f64::consts::TAU * i as f64 / m as f64).cos(), r * (std::f64::consts::TAU * i as f64 / m as f64).sin()))).collect(),
+            0,
+        )
+        .unwrap();
+        let disc = circle(100.0);
+        let disc = disc.transformed(kurbo::Affine::scale(100.0 / ArcTable::new(&disc, 1e-13).total()));
+        let glue = Glue::new(&poly, &disc, 0.0).unwrap();
+        let step = 100.0 / m as f64;
+        for n in [128, 256] {
+            let u = glue.positions(n);
+            assert!(u.windows(2).all(|w| w[0] < w[1]) && u[n - 1] < glue.perimeter(), "n = {n}: positions not increasing");
+            for i in 0..m {
+                let c = i as f64 * step;
+                assert!(u.iter().any(|&x| (x - c).abs() < 1e-9), "n = {n}: corner {i} at {c} is not a seam vertex");
+            }
         }
     }
 

@@ -165,15 +165,66 @@ fn flip_pass(
             if count[p].get(&(i, j)).is_some_and(|&c| c >= MAX_FLIPS_PER_EDGE) {
                 continue;
             }
-            if let Some(s) = reflex_sine(x, &tri[p], p, i, j) {
-                if s > REFLEX_SINE && tri[p].flip(i, j, pts, s2) {
-                    *count[p].entry((i, j)).or_insert(0) += 1;
-                    flips += 1;
-                }
+            let Some(s) = reflex_sine(x, &tri[p], p, i, j) else { continue };
+            if s <= REFLEX_SINE {
+                continue;
+            }
+            // The new chord must be able to be an edge (see [`shortest_flips`]): a flip that
+            // would put in a chord longer than the path through the other piece is refused,
+            // unless the chord it replaces is as bad.
+            let (Some(k), Some(l)) = (tri[p].opposite(i, j), tri[p].opposite(j, i)) else { continue };
+            if excess(pieces, p, k, l) > SHORTEST_TOL.max(excess(pieces, p, i, j)) {
+                continue;
+            }
+            if tri[p].flip(i, j, pts, s2) {
+                *count[p].entry((i, j)).or_insert(0) += 1;
+                flips += 1;
             }
         }
     }
     flips
+}
+
+/// Relative excess `d_p(i, j) / d_q(i, j) − 1` of chord i–j of piece `p` over the same chord of
+/// the other piece `q`. An isometric realization has `|X_i − X_j| = d_p(i, j)` for every edge of
+/// `p` and `|X_i − X_j| ≤ d_q(i, j)` (the straight segment is no longer than the path across the
+/// other piece, a curve on the surface), so a chord with positive excess cannot be an edge of any
+/// realization, convex or not. (For a convex polyhedron this is the fact that every edge is a
+/// shortest path between its ends.)
+fn excess(pieces: &SeamPieces, p: usize, i: usize, j: usize) -> f64 {
+    pieces.chord(p, i, j) / pieces.chord(1 - p, i, j).max(f64::MIN_POSITIVE) - 1.0
+}
+
+/// Excess (see [`excess`]) tolerated in a chord put in by a flip: the seam edges' lengths are
+/// the mean of A's and B's chords, which makes the metric's distances differ from either flat
+/// piece's at `O(h²)` relative, so only a clear excess is ruled out.
+const SHORTEST_TOL: f64 = 1e-6;
+
+/// Flips every chord of piece `p` that cannot be an edge (positive [`excess`]) to the other
+/// diagonal of its quad, when that one's excess is smaller, until none can be. Purely intrinsic
+/// (no positions): it turns the ear-clipping strip, which on a rectangle glued to a circle holds
+/// rectangle chords up to 8 % longer than the circle's between the same seam vertices (and circle
+/// chords up to 59 % longer than the rectangle's), into a start the isometry equations can meet.
+/// Each flip lowers the sum of the chords' excess ratios, so it ends.
+fn shortest_flips(t: &mut Triangulation, pieces: &SeamPieces, p: usize) {
+    let pts = &pieces.flat[p].pts;
+    let s2 = metric::size2(pts);
+    loop {
+        let mut any = false;
+        for (i, j) in t.chords() {
+            let e = excess(pieces, p, i, j);
+            if e <= 0.0 {
+                continue;
+            }
+            let (Some(k), Some(l)) = (t.opposite(i, j), t.opposite(j, i)) else { continue };
+            if excess(pieces, p, k, l) < e && t.flip(i, j, pts, s2) {
+                any = true;
+            }
+        }
+        if !any {
+            break;
+        }
+    }
 }
 
 /// Initial positions: the two flat polygons rigidly aligned (Procrustes) and averaged, lifted
@@ -183,6 +234,15 @@ fn flip_pass(
 /// `lift` scales the saddle's height (the multistart tries several).
 /// Congruent pieces glued congruently give M̃ = 0: the flat, doubly covered start, which is
 /// already the solution.
+///
+/// A negative `lift` gives the fourfold start instead, z = (|lift|/10)·ρ cos 4θ in polar
+/// coordinates about the centroid. Pieces with a fourfold (or nearly fourfold) symmetry, a
+/// square or a near-square rectangle glued to a circle, give M̃ ≈ 0 too, yet their D-form is not
+/// flat: by Alexandrov–Pogorelov uniqueness it has the symmetries of the gluing, so a 90° turn
+/// that maps each piece onto itself maps the shape onto itself, and its seam's height can only
+/// hold the Fourier modes cos 4kθ, sin 4kθ — none of which the saddle (cos 2θ) has. From the
+/// saddle, every height ends on a wrong branch for 52×48 and 50×50 rectangles with a circle;
+/// from the fourfold start they converge in ~50–150 steps (so do 60×40 and 57×43).
 fn initial_guess(pieces: &SeamPieces, lift: f64) -> Vec<V3> {
     let n = pieces.n;
     let (a, b) = (&pieces.flat[0].pts, &pieces.flat[1].pts);
@@ -235,6 +295,13 @@ fn initial_guess(pieces: &SeamPieces, lift: f64) -> Vec<V3> {
     let delta = if total > 0.0 { lam / (total / 2.0) } else { 0.0 };
     let amp = if lam > 0.0 && r > 0.0 { 0.5 * delta.sqrt() / r } else { 0.0 };
     let amp = amp * lift;
+    if lift < 0.0 {
+        // The fourfold start: z = |lift|·r/10 · (ρ/r) cos 4θ.
+        return flat
+            .iter()
+            .map(|p| [p[0], p[1], -0.1 * lift * p[0].hypot(p[1]) * (4.0 * p[1].atan2(p[0])).cos()])
+            .collect();
+    }
     flat.iter()
         .map(|p| {
             let q = (hx * (p[0] * p[0] - p[1] * p[1]) + 2.0 * hxy * p[0] * p[1]) / lam.max(f64::MIN_POSITIVE);
@@ -332,7 +399,14 @@ pub fn map_affine(f: [[f64; 2]; 3], t: [V3; 3], q: [f64; 2]) -> Option<V3> {
     Some([0, 1, 2].map(|a| b0 * t[0][a] + b1 * t[1][a] + b2 * t[2][a]))
 }
 
+/// A cold start's triangulation of piece `p`: ear clipping, then [`shortest_flips`].
 fn triangulate(pieces: &SeamPieces, p: usize) -> Result<Triangulation> {
+    let mut t = ear_clip(pieces, p)?;
+    shortest_flips(&mut t, pieces, p);
+    Ok(t)
+}
+
+fn ear_clip(pieces: &SeamPieces, p: usize) -> Result<Triangulation> {
     metric::ear_clip(&pieces.flat[p].pts).ok_or_else(|| Error::Infeasible {
         reason: format!(
             "The {} piece is too thin or too detailed for {} seam vertices: its sampled outline cannot be triangulated. Raise the resolution or simplify the outline.",
@@ -341,6 +415,9 @@ fn triangulate(pieces: &SeamPieces, p: usize) -> Result<Triangulation> {
         ),
     })
 }
+
+/// Steps after which [`relax`] folds reflex chords if the cost has not halved (see there).
+const PLATEAU: usize = 10;
 
 /// Result of relaxing one level.
 struct Relaxed {
@@ -376,7 +453,26 @@ fn relax(
     let mut lambda = 1e-4;
     let mut iterations = 0;
     let mut converged = false;
+    let mut window = (0usize, c);
     while iterations < budget {
+        // A triangulation with no isometric realization makes the least-squares cost plateau long
+        // before the step gets negligible (hundreds of steps on a rectangle with a circle): when
+        // the cost has not halved in PLATEAU steps, fold the reflex chords now.
+        if iterations - window.0 >= PLATEAU {
+            let slow = c > 0.5 * window.1;
+            window = (iterations, c);
+            if slow {
+                let f = flip_pass(x, tri, pieces, &mut count, orientation);
+                if f > 0 {
+                    flips += f;
+                    bars = self::bars(pieces, tri);
+                    ne = pattern(n, &bars);
+                    c = cost(x, &bars);
+                    lambda = 1e-4;
+                    window = (iterations, c);
+                }
+            }
+        }
         iterations += 1;
         let Some(d) = step(x, &bars, lambda, &mut ne) else {
             lambda *= 10.0;
@@ -450,8 +546,9 @@ const PATIENT: Patience = Patience { attempt: 2000, level: 2000, cap: usize::MAX
 /// grinding it longer only delays the cold solve the slider then waits for.
 const WARM_BUDGET: usize = 300;
 
-/// Saddle heights tried by the multistart, most likely first.
-const LIFTS: [f64; 8] = [1.0, 3.0, 2.0, 0.5, 5.0, 1.5, 8.0, 0.25];
+/// Saddle heights tried by the multistart, most likely first; a negative one is the fourfold
+/// start of that height (see [`initial_guess`]).
+const LIFTS: [f64; 9] = [1.0, -1.0, 3.0, 2.0, 0.5, 5.0, 1.5, 8.0, 0.25];
 
 fn max_strain(x: &[V3], bars: &[Bar]) -> f64 {
     bars.iter().map(|b| (norm(sub(x[b.j], x[b.i])) / b.d - 1.0).abs()).fold(0.0, f64::max)
@@ -476,7 +573,8 @@ const LEVEL_STRAIN_TOL: f64 = 1e-5;
 /// else a fresh ear clipping.
 fn refine(tc: &[Triangulation; 2], pieces: &SeamPieces, p: usize) -> Result<Triangulation> {
     if tc[p].len() * 2 == pieces.n {
-        if let Some(t) = tc[p].doubled(&pieces.flat[p].pts) {
+        if let Some(mut t) = tc[p].doubled(&pieces.flat[p].pts) {
+            shortest_flips(&mut t, pieces, p);
             return Ok(t);
         }
     }
@@ -494,7 +592,8 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
     let Some(w) = &options.warm else { return solve_cold(glue, options) };
     // A warm start: a previous result's vertices, already outward (never mirrored).
     let pieces = glue.sample(options.resolution);
-    let mut tri = [triangulate(&pieces, 0)?, triangulate(&pieces, 1)?];
+    // Plain ear clipping, not [`triangulate`]: the warm positions decide the flips.
+    let mut tri = [ear_clip(&pieces, 0)?, ear_clip(&pieces, 1)?];
     let mut x = resample(w, pieces.n);
     let r = relax(&pieces, &mut x, &mut tri, options.max_iterations.min(WARM_BUDGET).max(1), STEP_TOL, Orientation::Kept);
     if is_good(&x, &tri, r.converged) {
