@@ -1,4 +1,4 @@
-// When the solver cannot realize a D-form (a near-square rectangle on a circle), the 3D tab used to
+// When the solver cannot realize a D-form (at the time a near-square rectangle on a circle, now a spiky star), the 3D tab used to
 // show the flat or folded shape it stopped at with only a grey "· not converged" after the volume:
 // a student read "Volume 1.19 mm³" as the answer and exported it. Now a warning says the preview is
 // approximate. Checked independently: a D-form is made of the flat pieces without stretching, so the
@@ -28,18 +28,27 @@ async function open3d(name, rect) {
 }
 
 test('3D tab: a form the solver cannot realize is clearly marked approximate; a realized one is not', async () => {
-  // 50 × 50 mm square + circle, both 200 mm around: the solver stops at a flat, stretched shape.
-  const square = await open3d('square-circle.svg', '<rect x="45" y="50" width="50" height="50"/>');
-  const flat = 2500 + CIRCLE_AREA;
-  assert.ok(Math.abs(square.area - flat) > 0.01 * flat,
-    `precondition: this test needs a shape the solver cannot realize (mesh area ${square.area.toFixed(0)} vs flat ${flat.toFixed(0)} mm²)`);
-  const warn = square.page.locator('#warn3d');
+  // A five-pointed star (spikes 2.5× the notches' radius) + circle, both 200 mm around: the
+  // solver stops at a stretched shape (the square it used to fail on is realized now).
+  const pts = Array.from({ length: 10 }, (_, i) => {
+    const r = i % 2 ? 10 : 25, t = (Math.PI * i) / 5;
+    return [70 + r * Math.sin(t), 75 - r * Math.cos(t)];
+  });
+  const starPerimeter = pts.reduce((s, p, i) => s + Math.hypot(pts[(i + 1) % 10][0] - p[0], pts[(i + 1) % 10][1] - p[1]), 0);
+  const starArea = Math.abs(pts.reduce((s, p, i) => s + p[0] * pts[(i + 1) % 10][1] - pts[(i + 1) % 10][0] * p[1], 0)) / 2;
+  const star = await open3d('star-circle.svg', `<polygon points="${pts.map((p) => p.join(',')).join(' ')}"/>`);
+  // The app normalizes both to the largest perimeter, the circle's 200 mm.
+  const k = Math.max(200, starPerimeter);
+  const flat = starArea * (k / starPerimeter) ** 2 + CIRCLE_AREA * (k / 200) ** 2;
+  assert.ok(Math.abs(star.area - flat) > 0.01 * flat,
+    `precondition: this test needs a shape the solver cannot realize (mesh area ${star.area.toFixed(0)} vs flat ${flat.toFixed(0)} mm²)`);
+  const warn = star.page.locator('#warn3d');
   assert.ok(await warn.isVisible(), 'the stretched, wrong-looking form must come with a visible warning');
   assert.match(await warn.textContent(), /approximate/i);
   assert.match(await warn.textContent(), /real D-form will look different/);
-  assert.match(await square.page.textContent('#status'), /approximate/i, 'the export message says what was exported');
-  await square.page.screenshot({ path: artifactPath('browser-3d-approximate.png') });
-  await square.page.close();
+  assert.match(await star.page.textContent('#status'), /approximate/i, 'the export message says what was exported');
+  await star.page.screenshot({ path: artifactPath('browser-3d-approximate.png') });
+  await star.page.close();
 
   // 80 × 20 mm rectangle + circle: realized, its mesh area is the flat pieces' area; no warning.
   const rect = await open3d('rect-circle.svg', '<rect x="30" y="65" width="80" height="20"/>');
