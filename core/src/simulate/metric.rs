@@ -39,22 +39,34 @@ impl Triangulation {
     }
 
     /// The triangulation of the polygon with twice the samples (coarse vertex m = fine vertex
-    /// 2m): every coarse triangle kept, plus the ear (2m, 2m+1, 2m+2) at each seam edge. `None`
-    /// when an ear is not a proper counter-clockwise triangle of `fine` (a concave stretch where
-    /// the new sample falls inside), or when an ear would hold another sample.
+    /// 2m): every coarse triangle kept, plus the ear (2m, 2m+1, 2m+2) at each seam edge.
+    ///
+    /// On a straight stretch of the outline (a polygon's side) that ear has no area: the new
+    /// sample lies on the coarse seam edge. The coarse triangle on that edge is then split at the
+    /// new sample instead (its sub-polygon, the triangle with the new samples on its seam edges,
+    /// ear-clipped), so the coarse solution's chords, which name the convex shape, stay edges.
+    /// (A fresh ear clipping would throw them away; from its strip the flips can end in a fan of
+    /// chords from one sample to consecutive samples of a straight side, whose reflex chords can
+    /// never flip: each one's quad has three collinear samples. A triangle glued to a circle
+    /// converged at 32 seam vertices and stalled at 64 in such fans at its corners.)
+    ///
+    /// `None` when an ear is clockwise (a concave stretch where the new sample falls inside), or
+    /// when a coarse triangle would hold another sample.
     pub fn doubled(&self, fine: &[[f64; 2]]) -> Option<Triangulation> {
-        let nf = 2 * self.n;
+        let (n, nf) = (self.n, 2 * self.n);
         if fine.len() != nf {
             return None;
         }
         let eps = AREA_EPS * size2(fine);
-        let mut tris: Vec<[usize; 3]> = self.tris.iter().map(|t| t.map(|v| 2 * v)).collect();
-        for m in 0..self.n {
-            let (a, b, c) = (2 * m, 2 * m + 1, (2 * m + 2) % nf);
-            if orient(fine[a], fine[b], fine[c]) <= eps {
+        let mut tris: Vec<[usize; 3]> = Vec::with_capacity(nf - 2);
+        // Seam edges whose new sample lies on the coarse seam edge (no ear).
+        let mut straight = vec![false; n];
+        for m in 0..n {
+            let o = orient(fine[2 * m], fine[2 * m + 1], fine[(2 * m + 2) % nf]);
+            if o < -eps {
                 return None;
             }
-            tris.push([a, b, c]);
+            straight[m] = o <= eps;
         }
         // The coarse triangles must stay proper triangles at the fine positions (a sample moved
         // onto a corner at one level need not sit there at the other) and must not swallow a new
@@ -64,13 +76,28 @@ impl Triangulation {
             if orient(a, b, c) <= eps {
                 return None;
             }
-            for m in 0..self.n {
+            for m in 0..n {
                 let p = fine[2 * m + 1];
                 if orient(a, b, p) > eps && orient(b, c, p) > eps && orient(c, a, p) > eps {
                     return None;
                 }
             }
+            let mut poly = Vec::with_capacity(6);
+            for e in 0..3 {
+                let (u, v) = (t[e], t[(e + 1) % 3]);
+                poly.push(2 * u);
+                if v == (u + 1) % n && straight[u] {
+                    poly.push(2 * u + 1);
+                }
+            }
+            if poly.len() == 3 {
+                tris.push([poly[0], poly[1], poly[2]]);
+                continue;
+            }
+            let sub: Vec<[f64; 2]> = poly.iter().map(|&v| fine[v]).collect();
+            tris.extend(ear_clip(&sub)?.tris.into_iter().map(|t| t.map(|v| poly[v])));
         }
+        tris.extend((0..n).filter(|&m| !straight[m]).map(|m| [2 * m, 2 * m + 1, (2 * m + 2) % nf]));
         Some(Triangulation::from_tris(nf, tris))
     }
 

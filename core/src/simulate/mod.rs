@@ -38,9 +38,9 @@
 //! Quadratic convergence of Gauss–Newton on a square system gives 1e-12 strain in a handful of
 //! steps, and a warm start (a previous result's vertices) keeps the slider interactive. Which
 //! isometric branch the solver lands on depends on the start, so a cold solve is a multistart
-//! over saddle heights on a coarse-to-fine ladder, first with tight step budgets, then (only if
-//! that found no convex branch) with patient ones: nearly flat regions (pieces with straight
-//! stretches) settle slowly but correctly.
+//! over starts (saddles, a fourfold start, the chord-mismatch start) on a coarse-to-fine ladder,
+//! first with tight step budgets, then (only if that found no convex branch) with patient ones:
+//! nearly flat regions (pieces with straight stretches) settle slowly but correctly.
 //!
 //! *Why not the alternatives.* Bobenko–Izmestiev (geometry-central's `embedConvex`) is exact and
 //! fast but needs strictly positive curvature and fails on the flat doubly covered case (two

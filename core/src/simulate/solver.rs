@@ -231,11 +231,11 @@ fn shortest_flips(t: &mut Triangulation, pieces: &SeamPieces, p: usize) {
 /// into the saddle that the chord mismatch asks for. Where A's chords are longer than B's, A
 /// (the top sheet, outward normal +z) must bulge across them, which puts the seam low at their
 /// ends: z = −s·(ĉᵀ M̃ ĉ) with M̃ the trace-free part of Σ (d_A² − d_B²) û ûᵀ.
-/// `lift` scales the saddle's height (the multistart tries several).
+/// `lift` scales the saddle's height (the multistart tries several; see [`Start`]).
 /// Congruent pieces glued congruently give M̃ = 0: the flat, doubly covered start, which is
 /// already the solution.
 ///
-/// A negative `lift` gives the fourfold start instead, z = (|lift|/10)·ρ cos 4θ in polar
+/// A negative `lift` ([`Start::Fourfold`]) gives the fourfold start instead, z = (|lift|/10)·ρ cos 4θ in polar
 /// coordinates about the centroid. Pieces with a fourfold (or nearly fourfold) symmetry, a
 /// square or a near-square rectangle glued to a circle, give M̃ ≈ 0 too, yet their D-form is not
 /// flat: by Alexandrov–Pogorelov uniqueness it has the symmetries of the gluing, so a 90° turn
@@ -243,7 +243,12 @@ fn shortest_flips(t: &mut Triangulation, pieces: &SeamPieces, p: usize) {
 /// hold the Fourier modes cos 4kθ, sin 4kθ — none of which the saddle (cos 2θ) has. From the
 /// saddle, every height ends on a wrong branch for 52×48 and 50×50 rectangles with a circle;
 /// from the fourfold start they converge in ~50–150 steps (so do 60×40 and 57×43).
-fn initial_guess(pieces: &SeamPieces, lift: f64) -> Vec<V3> {
+fn initial_guess(pieces: &SeamPieces, start: Start) -> Vec<V3> {
+    let lift = match start {
+        Start::Saddle(h) => h,
+        Start::Fourfold(h) => -h,
+        Start::Mismatch(h) => return mismatch_start(pieces, h),
+    };
     let n = pieces.n;
     let (a, b) = (&pieces.flat[0].pts, &pieces.flat[1].pts);
     let centroid = |p: &[[f64; 2]]| {
@@ -308,6 +313,39 @@ fn initial_guess(pieces: &SeamPieces, lift: f64) -> Vec<V3> {
             [p[0], p[1], -amp * q]
         })
         .collect()
+}
+
+/// The mismatch start: the flat layout of [`initial_guess`] with seam vertex k at height
+/// `z_k = −(h/10)·r·(μ_k − μ̄) / max|μ − μ̄|`, where `μ_k = Σ_j (d_A(k, j)² − d_B(k, j)²)` sums the
+/// chord mismatch over every other seam vertex and `r` is the layout's RMS radius.
+///
+/// The saddle is the quadratic (cos 2θ) part of the same rule: where A's chords are longer than
+/// B's, A bulges across them and the seam sits low at their ends. Here every vertex gets its own
+/// height, so the start holds every angular mode the mismatch has, not only cos 2θ (and cos 4θ,
+/// the fourfold start). A regular m-gon glued to a circle has the m-fold symmetry of the gluing
+/// (Alexandrov–Pogorelov uniqueness, as for the fourfold start), so its seam height holds only the
+/// modes cos mkθ: μ has them (A's chords from a corner are the longest, its sides' midpoints the
+/// shortest), while the saddle and the fourfold start have none for m = 3 or m ≥ 5. A triangle,
+/// an octagon and a 12-gon with a circle ended unconverged from every other start (strain
+/// 1–38 %); from this one they converge in ~100–200 steps.
+fn mismatch_start(pieces: &SeamPieces, h: f64) -> Vec<V3> {
+    let n = pieces.n;
+    let flat = initial_guess(pieces, Start::Saddle(0.0));
+    let mu: Vec<f64> = (0..n).map(|k| (0..n).map(|j| pieces.chord(0, k, j).powi(2) - pieces.chord(1, k, j).powi(2)).sum()).collect();
+    let mean = mu.iter().sum::<f64>() / n as f64;
+    let top = mu.iter().map(|m| (m - mean).abs()).fold(0.0, f64::max);
+    let r = (flat.iter().map(|p| p[0] * p[0] + p[1] * p[1]).sum::<f64>() / n as f64).sqrt();
+    let s = if top > 0.0 { -0.1 * h * r / top } else { 0.0 };
+    flat.iter().zip(&mu).map(|(p, m)| [p[0], p[1], s * (m - mean)]).collect()
+}
+
+/// A start of the multistart (see [`initial_guess`]): the saddle, the fourfold start, or the
+/// mismatch start ([`mismatch_start`]), each with its relative height.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Start {
+    Saddle(f64),
+    Fourfold(f64),
+    Mismatch(f64),
 }
 
 /// A warm start resampled to `n` seam vertices (linear along the previous seam polygon).
@@ -546,9 +584,21 @@ const PATIENT: Patience = Patience { attempt: 2000, level: 2000, cap: usize::MAX
 /// grinding it longer only delays the cold solve the slider then waits for.
 const WARM_BUDGET: usize = 300;
 
-/// Saddle heights tried by the multistart, most likely first; a negative one is the fourfold
-/// start of that height (see [`initial_guess`]).
-const LIFTS: [f64; 9] = [1.0, -1.0, 3.0, 2.0, 0.5, 5.0, 1.5, 8.0, 0.25];
+/// Starts tried by the multistart, most likely first (see [`initial_guess`]). The mismatch start
+/// comes third so that the shapes the first two already solve take no longer.
+const LIFTS: [Start; 11] = [
+    Start::Saddle(1.0),
+    Start::Fourfold(1.0),
+    Start::Mismatch(1.0),
+    Start::Saddle(3.0),
+    Start::Saddle(2.0),
+    Start::Saddle(0.5),
+    Start::Mismatch(2.0),
+    Start::Saddle(5.0),
+    Start::Saddle(1.5),
+    Start::Saddle(8.0),
+    Start::Saddle(0.25),
+];
 
 fn max_strain(x: &[V3], bars: &[Bar]) -> f64 {
     bars.iter().map(|b| (norm(sub(x[b.j], x[b.i])) / b.d - 1.0).abs()).fold(0.0, f64::max)
@@ -581,10 +631,47 @@ fn refine(tc: &[Triangulation; 2], pieces: &SeamPieces, p: usize) -> Result<Tria
     triangulate(pieces, p)
 }
 
-/// Whether a solution is the convex isometric one: converged, without a dent.
+/// Whether a solution is the convex isometric one: converged, without a dent, and convex as a
+/// whole ([`outside`] within [`OUTSIDE_TOL`]).
 fn is_good(x: &[V3], tri: &[Triangulation; 2], converged: bool) -> bool {
-    converged && worst_reflex(x, tri) <= DENT_SINE
+    converged && worst_reflex(x, tri) <= DENT_SINE && outside(x, tri) <= OUTSIDE_TOL
 }
+
+/// Largest height of a vertex above the plane of a face (outward), relative to the largest
+/// distance of a vertex from the centroid: 0 for a convex mesh.
+///
+/// No reflex chord is not enough: every chord can fold outward while the surface as a whole is
+/// not convex (a locally convex but not embedded realization). A triangle glued to a circle ended
+/// there, converged and with no reflex chord, 2 % below the convex shape's volume and with
+/// vertices a whole size outside some face's plane. A closed surface that is convex at every
+/// edge and embedded is convex (Hadamard), so the two tests together rule out such branches.
+fn outside(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
+    let n = x.len() as f64;
+    let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n, s[2] + p[2] / n]);
+    let size = x.iter().map(|p| norm(sub(*p, c))).fold(0.0, f64::max);
+    // Against every face, 32 vertices spread along the seam: the test is for whole-shape
+    // failures (a vertex a sizeable fraction of the size outside), which no 32 of them all miss,
+    // and it keeps the cost at 32·(2n − 4) plane tests, nothing next to a solver step.
+    let stride = (x.len() / 32).max(1);
+    let mut worst = 0.0f64;
+    for (p, t) in tri.iter().enumerate() {
+        for &[a, b, c] in &t.tris {
+            let (b, c) = if p == 0 { (b, c) } else { (c, b) };
+            let m = cross(sub(x[b], x[a]), sub(x[c], x[a]));
+            let l = norm(m);
+            if l == 0.0 {
+                continue;
+            }
+            let top = x.iter().step_by(stride).map(|q| dot(m, sub(*q, x[a]))).fold(0.0, f64::max);
+            worst = worst.max(top / l);
+        }
+    }
+    if size > 0.0 { worst / size } else { 0.0 }
+}
+
+/// Relative height above a face (see [`outside`]) that makes a solution non-convex: far above the
+/// tiny folds that coarse levels keep (see [`DENT_SINE`]).
+const OUTSIDE_TOL: f64 = 1e-2;
 
 /// Finds the seam positions at `options.resolution` seam vertices, from the warm start or cold
 /// (see [`solve_cold`]). Never panics; an input that cannot even be triangulated is an error.
@@ -611,8 +698,8 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
     Ok((p, sol))
 }
 
-/// Multistart on the coarsest level (cheap), trying the saddle heights `LIFTS[from..]`: the
-/// height decides which isometric branch Gauss–Newton falls into; the first converged one
+/// Multistart on the coarsest level (cheap), trying the starts `LIFTS[from..]`: the
+/// start decides which isometric branch Gauss–Newton falls into; the first converged one
 /// without a dent is kept (coarse levels keep tiny reflex folds, see DENT_SINE, which the finer
 /// levels flip away), else the one of least strain. Returns it, whether it is good, and the
 /// index of the next height to try (`LIFTS.len()` once a start failed to be good: all were tried).
