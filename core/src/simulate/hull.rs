@@ -117,6 +117,128 @@ pub fn triangulations(x: &[V3], pieces: &SeamPieces) -> Option<[Triangulation; 2
     Some([a, b])
 }
 
+/// Total turn `2π − (α_A + α_B)` below which a seam vertex counts as flat: both pieces straight
+/// there (each interior angle π to round-off), so no vertex of the glued surface.
+const FLAT_CURVATURE: f64 = 1e-9;
+
+/// The seam vertices that are cone points of the glued surface when the gluing is *polyhedral*:
+/// both pieces are polygons, so every seam vertex is either a corner of a piece (a cone point,
+/// curvature `2π − α_A − α_B > 0`) or a sample on straight sides of both (total angle 2π: a flat
+/// point of the surface). `None` when some piece is curved (more than a quarter of the seam
+/// vertices are cone points) or fewer than four are (a doubly covered polygon at best).
+///
+/// The D-form of two convex polygons is then a convex *polyhedron* (Alexandrov's gluing theorem:
+/// a convex polyhedral metric on the sphere is realized by a unique convex polyhedron, possibly
+/// doubly covered; its vertices are exactly the metric's cone points). Its edges are shortest
+/// paths between cone points.
+pub fn cone_vertices(pieces: &SeamPieces) -> Option<Vec<usize>> {
+    let n = pieces.n;
+    let angle = |p: usize, k: usize| {
+        let f = &pieces.flat[p].pts;
+        let (a, b, c) = (f[(k + n - 1) % n], f[k], f[(k + 1) % n]);
+        let (u, v) = ([a[0] - b[0], a[1] - b[1]], [c[0] - b[0], c[1] - b[1]]);
+        // Interior angle of the counter-clockwise polygon at b: from b→c round to b→a.
+        let ang = (v[0] * u[1] - v[1] * u[0]).atan2(v[0] * u[0] + v[1] * u[1]);
+        if ang < 0.0 { ang + std::f64::consts::TAU } else { ang }
+    };
+    let cones: Vec<usize> =
+        (0..n).filter(|&k| std::f64::consts::TAU - angle(0, k) - angle(1, k) > FLAT_CURVATURE).collect();
+    (cones.len() >= 4 && 4 * cones.len() <= n).then_some(cones)
+}
+
+/// Twice the signed area of the flat polygon through `idx` (indices into `pts`).
+fn area2(pts: &[[f64; 2]], idx: &[usize]) -> f64 {
+    (0..idx.len()).map(|m| metric::orient([0.0, 0.0], pts[idx[m]], pts[idx[(m + 1) % idx.len()]])).sum()
+}
+
+/// A's and B's triangulations of a polyhedral gluing (see [`cone_vertices`]) built around the
+/// crease chords read off the convex hull of the *cone points* of `x`, or `None`.
+///
+/// [`triangulations`] cannot serve a polyhedral D-form: most of its seam vertices lie on flat
+/// faces or straight creases, inside the hull to round-off, so the hull of all seam vertices
+/// is degenerate. The polyhedron is the hull of its cone points, though, and each of its edges
+/// between two cone points that are not neighbours along the seam is a shortest path. When it
+/// stays in one piece it is a chord of that piece (the usual case: the 90×10 rectangle with a
+/// square at 128 and at 160 seam vertices has all six interior creases so); one that crosses the
+/// seam at a flat point is not a chord at all, and this restart then simply fails the caller's
+/// checks. Of the two pieces' chords between the same cone points only the shorter can be an
+/// edge (the straight segment is at most as long as the path across the other piece, see the
+/// solver's `excess`), so each hull edge goes to the piece with the shorter chord, when that
+/// chord is within a few per cent of its 3D length (a hull edge of a shape far off is not a
+/// crease). Each piece's polygon is cut along its creases and the parts ear-clipped: every
+/// triangle then lies in one face of the polyhedron (flat parts are triangulated any way), so
+/// the isometry equations have the convex polyhedron as an exact solution, which the local
+/// flips, deciding by dihedral signs that are round-off on coplanar triangles, cannot reach
+/// (a 90×10 rectangle with a square stalled folded, strain 1.2e-7 with 5000 steps and flips).
+pub fn cone_triangulations(x: &[V3], pieces: &SeamPieces) -> Option<[Triangulation; 2]> {
+    let n = pieces.n;
+    if x.len() != n {
+        return None;
+    }
+    let cones = cone_vertices(pieces)?;
+    let xc: Vec<V3> = cones.iter().map(|&k| x[k]).collect();
+    let mut edges: Vec<(usize, usize)> = faces(&xc)
+        .iter()
+        .flat_map(|f| (0..3).map(move |m| (f[m], f[(m + 1) % 3])))
+        .map(|(a, b)| (cones[a].min(cones[b]), cones[a].max(cones[b])))
+        .collect();
+    crate::order::sort_dedup_pairs(&mut edges);
+    let m = cones.len();
+    let mut chords: [Vec<(usize, usize)>; 2] = [Vec::new(), Vec::new()];
+    for (u, v) in edges {
+        let (cu, cv) = (cones.binary_search(&u).ok()?, cones.binary_search(&v).ok()?);
+        if (cu + 1) % m == cv || (cv + 1) % m == cu {
+            continue; // neighbours along the seam: the seam itself (straight in both pieces)
+        }
+        let (da, db) = (pieces.chord(0, u, v), pieces.chord(1, u, v));
+        let p = if da <= db { 0 } else { 1 };
+        let l = dot(sub(x[v], x[u]), sub(x[v], x[u])).sqrt();
+        if (l / pieces.chord(p, u, v) - 1.0).abs() > 0.05 {
+            continue;
+        }
+        // Not along the piece's outline (both sides of the chord must enclose area) and not
+        // crossing a chord taken already (u < a < v < b interleaved).
+        let pts = &pieces.flat[p].pts;
+        let side: Vec<usize> = (u..=v).collect();
+        let other: Vec<usize> = (v..n).chain(0..=u).collect();
+        let tot = area2(pts, &(0..n).collect::<Vec<_>>()).abs();
+        if area2(pts, &side) <= 1e-9 * tot || area2(pts, &other) <= 1e-9 * tot {
+            continue;
+        }
+        if chords[p].iter().any(|&(a, b)| (u < a && a < v && v < b) || (a < u && u < b && b < v)) {
+            continue;
+        }
+        chords[p].push((u, v));
+    }
+    let mut out: Vec<Triangulation> = Vec::with_capacity(2);
+    for p in 0..2 {
+        let pts = &pieces.flat[p].pts;
+        // Cut the polygon along each chord, then ear-clip the parts.
+        let mut parts: Vec<Vec<usize>> = vec![(0..n).collect()];
+        for &(u, v) in &chords[p] {
+            let k = parts.iter().position(|q| q.contains(&u) && q.contains(&v))?;
+            let q = parts.swap_remove(k);
+            let (iu, iv) = (q.iter().position(|&w| w == u)?, q.iter().position(|&w| w == v)?);
+            let (a, b) = (iu.min(iv), iu.max(iv));
+            parts.push(q[a..=b].to_vec());
+            parts.push(q[b..].iter().chain(&q[..=a]).copied().collect());
+        }
+        let mut tris = Vec::with_capacity(n - 2);
+        for q in &parts {
+            let sub_pts: Vec<[f64; 2]> = q.iter().map(|&w| pts[w]).collect();
+            let t = metric::ear_clip(&sub_pts)?;
+            tris.extend(t.tris.iter().map(|&[a, b, c]| [q[a], q[b], q[c]]));
+        }
+        if tris.len() != n - 2 {
+            return None;
+        }
+        out.push(Triangulation::from_tris(n, tris));
+    }
+    let b = out.pop()?;
+    let a = out.pop()?;
+    Some([a, b])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -673,6 +673,53 @@ fn outside(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
 /// tiny folds that coarse levels keep (see [`DENT_SINE`]).
 const OUTSIDE_TOL: f64 = 1e-2;
 
+/// Steps allowed to a [`cone_restart`], on top of the level's own (it runs only after a level
+/// failed, and from a start that is exact up to the cone points' error it needs a few dozen).
+const CONE_BUDGET: usize = 300;
+
+/// Largest strain of the cone triangulation at the positions a [`cone_restart`] starts from:
+/// it restarts a shape that is isometric but for its folds, not a wrong branch.
+const CONE_NEAR: f64 = 1e-3;
+
+/// The restart of a polyhedral gluing (two polygons) from the creases of the convex hull of its
+/// cone points ([`super::hull::cone_triangulations`]), relaxed from `x`: the positions, the
+/// triangulations and whether it converged, when it is good ([`is_good`]); else `None`.
+fn cone_restart(pieces: &SeamPieces, x: &[V3], budget: usize, step_tol: f64, steps: &mut (usize, usize)) -> Option<(Vec<V3>, [Triangulation; 2], bool)> {
+    let cones = super::hull::cone_vertices(pieces)?;
+    let pre = max_strain(x, &bars(pieces, &super::hull::cone_triangulations(x, pieces)?));
+    if pre > CONE_NEAR {
+        return None;
+    }
+    // Between two cone points that are neighbours along the seam both pieces are straight. When
+    // every crease of the polyhedron is a chord of one piece between cone points (the case
+    // [`super::hull::cone_triangulations`] builds for), no crease meets that stretch inside, so
+    // it lies on the boundary of one face of each piece: a straight segment in 3D, its samples
+    // evenly spread by arc length. Re-seating them there takes out the folds across flat faces
+    // ("popped" strips between a cone and two samples of a straight side, continued across the
+    // seam) that the fans from a cone to collinear samples keep: their chords cannot be flipped
+    // (the quad has three collinear vertices) and the folded strip is itself isometric, so
+    // Gauss–Newton stays in it (a 90×10 rectangle with a square: strain 1.2e-7 and two reflex
+    // chords after 5000 steps). Where a crease does cross the seam this is only a start, and
+    // [`is_good`] judges the result like any other.
+    let mut xc = x.to_vec();
+    let n = pieces.n;
+    for (m, &c0) in cones.iter().enumerate() {
+        let c1 = cones[(m + 1) % cones.len()];
+        let span = pieces.chord(0, c0, c1);
+        let mut k = (c0 + 1) % n;
+        while k != c1 && span > 0.0 {
+            let t = pieces.chord(0, c0, k) / span;
+            xc[k] = [0, 1, 2].map(|a| x[c0][a] + t * (x[c1][a] - x[c0][a]));
+            k = (k + 1) % n;
+        }
+    }
+    let mut t = super::hull::cone_triangulations(&xc, pieces)?;
+    let r = relax(pieces, &mut xc, &mut t, budget, step_tol, Orientation::Kept);
+    steps.0 += r.iterations;
+    steps.1 += r.flips;
+    is_good(&xc, &t, r.converged).then_some((xc, t, r.converged))
+}
+
 /// Finds the seam positions at `options.resolution` seam vertices, from the warm start or cold
 /// (see [`solve_cold`]). Never panics; an input that cannot even be triangulated is an error.
 pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solution)> {
@@ -829,13 +876,30 @@ fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patience, steps: &
                 let mut xf = upsample(pc, &x, &tri, pf);
                 let remaining = patience.cap.saturating_sub(steps.0);
                 let retry = (from < LIFTS.len() || !final_rung) && remaining > 0;
-                let budget = if retry { remaining.min(patience.level) } else { remaining.max(1) };
+                let full = if retry { remaining.min(patience.level) } else { remaining.max(1) };
+                // A polyhedral gluing gets the cone restart ([`cone_restart`]) after at most a
+                // level's budget, then (on the last try) the rest of the steps.
+                let polyhedral = super::hull::cone_vertices(pf).is_some();
+                let budget = if polyhedral { full.min(patience.level) } else { full };
                 let last = li + 1 == levels.len();
-                let r = relax(pf, &mut xf, &mut tf, budget, if last { STEP_TOL } else { 1e-6 }, Orientation::Kept);
+                let tol = if last { STEP_TOL } else { 1e-6 };
+                let r = relax(pf, &mut xf, &mut tf, budget, tol, Orientation::Kept);
                 steps.0 += r.iterations;
                 steps.1 += r.flips;
                 (x, tri, converged) = (xf, tf, r.converged);
-                let loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
+                let mut loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
+                if polyhedral && !is_good(&x, &tri, converged || loose) {
+                    if let Some(c) = cone_restart(pf, &x, CONE_BUDGET.min(patience.level), tol, steps) {
+                        (x, tri, converged) = c;
+                        loose = false;
+                    } else if full > r.iterations {
+                        let r = relax(pf, &mut x, &mut tri, full - r.iterations, tol, Orientation::Kept);
+                        steps.0 += r.iterations;
+                        steps.1 += r.flips;
+                        converged = r.converged;
+                        loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
+                    }
+                }
                 if retry && !is_good(&x, &tri, converged || loose) {
                     abandoned = true;
                     break;
