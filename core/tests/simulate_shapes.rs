@@ -493,7 +493,7 @@ fn nearly_congruent_48_gon_with_circle_is_honest() {
 
 /// Converged, isometric, closed, convex, without reflex chords: the checks of a polyhedral
 /// D-form (two polygons), whose mesh is exact (every crease a chord between corners), so the
-/// tolerances are round-off's. Returns the volume.
+/// tolerances are near round-off. Returns the volume.
 fn assert_polyhedral_pair_converges(name: &str, a: &Contour, b: &Contour, offset: f64, n: usize) -> f64 {
     let s = run(a, b, offset * perimeter(a), n);
     assert!(s.stats.converged, "{name} at offset {offset}, {n} seam vertices: wanted converged, got {:?}", s.stats);
@@ -501,7 +501,9 @@ fn assert_polyhedral_pair_converges(name: &str, a: &Contour, b: &Contour, offset
     assert_eq!(s.stats.reflex_edges, 0, "{name} at offset {offset}: reflex chords");
     assert_closed(&s);
     let cv = convexity_violation(&s);
-    assert!(cv < 1e-6, "{name} at offset {offset}: a vertex lies {cv} (relative) outside a face plane: not convex");
+    // 1e-5: the fans from a corner to collinear samples have thin triangles, whose planes
+    // magnify the positions' round-off (1e-10 strain gives ~2e-6 here).
+    assert!(cv < 1e-5, "{name} at offset {offset}: a vertex lies {cv} (relative) outside a face plane: not convex");
     let (v, _) = volume_area(&s);
     v.abs()
 }
@@ -524,4 +526,50 @@ fn thin_rectangle_with_square_converges_at_every_offset() {
     let v128 = assert_polyhedral_pair_converges("90×10 with a square", &a, &b, 0.0, 128);
     let v160 = assert_polyhedral_pair_converges("90×10 with a square", &a, &b, 0.0, 160);
     assert!((v128 / v160 - 1.0).abs() < 1e-8, "volume at 128 and 160 seam vertices: {v128} vs {v160}");
+}
+
+/// A regular m-gon of circumradius r turned by `rot`.
+fn ngon(m: usize, r: f64, rot: f64) -> Contour {
+    regular_polygon(m, rot).transformed(Affine::scale(r))
+}
+
+/// Regression: two equilateral triangles glued at 0.13 of the perimeter ended on a folded,
+/// isometric but non-convex branch (strain 3e-10, 14 reflex chords, reflex seam edges): at 128
+/// seam vertices every dihedral sign between coplanar triangles of the flat faces is round-off,
+/// and the starts fold. Solved on the six corners alone, then laid onto the samples, it is the
+/// convex polyhedron (Alexandrov), exact at every sampling that holds the corners: the same
+/// volume at 128 and 160 seam vertices.
+#[test]
+fn two_triangles_at_an_offset_converge() {
+    let (a, b) = (ngon(3, 30.0, 0.0), ngon(3, 30.0, 0.0));
+    let v128 = assert_polyhedral_pair_converges("two triangles", &a, &b, 0.13, 128);
+    let v160 = assert_polyhedral_pair_converges("two triangles", &a, &b, 0.13, 160);
+    assert!((v128 / v160 - 1.0).abs() < 1e-8, "volume at 128 and 160 seam vertices: {v128} vs {v160}");
+}
+
+/// Regression: an equilateral triangle glued to a square at 0.13 of the perimeter ended
+/// unconverged (strain 9 %, 38 reflex chords); see `two_triangles_at_an_offset_converge`.
+#[test]
+fn triangle_with_square_converges_at_an_offset() {
+    let a = ngon(3, 30.0, 0.3);
+    let b = rectangle(50.0, 50.0);
+    let b = b.transformed(Affine::scale(perimeter(&a) / perimeter(&b)));
+    let v128 = assert_polyhedral_pair_converges("triangle with a square", &a, &b, 0.13, 128);
+    let v96 = assert_polyhedral_pair_converges("triangle with a square", &a, &b, 0.13, 96);
+    assert!((v128 / v96 - 1.0).abs() < 1e-8, "volume at 128 and 96 seam vertices: {v128} vs {v96}");
+}
+
+/// Regression: two equilateral triangles at a quarter-perimeter offset "converged" to volume 0:
+/// a flat-folded sheet (flaps folded onto a face), which no dihedral or plane test sees (a 180°
+/// fold has out-of-plane sine 0) but which is not the doubly covered convex polygon its area
+/// would then be twice the shadow of. Whatever the solver returns there must not claim to be
+/// converged while flat and folded.
+#[test]
+fn two_triangles_at_a_quarter_offset_do_not_claim_a_flat_fold() {
+    let (a, b) = (ngon(3, 30.0, 0.0), ngon(3, 30.0, 0.0));
+    let s = run(&a, &b, 0.25 * perimeter(&a), 128);
+    let (v, area) = volume_area(&s);
+    if s.stats.converged {
+        assert!(v.abs() > 1e-3 * area.powf(1.5), "converged yet flat: volume {v}, area {area}");
+    }
 }

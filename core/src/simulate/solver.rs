@@ -634,7 +634,64 @@ fn refine(tc: &[Triangulation; 2], pieces: &SeamPieces, p: usize) -> Result<Tria
 /// Whether a solution is the convex isometric one: converged, without a dent, and convex as a
 /// whole ([`outside`] within [`OUTSIDE_TOL`]).
 fn is_good(x: &[V3], tri: &[Triangulation; 2], converged: bool) -> bool {
-    converged && worst_reflex(x, tri) <= DENT_SINE && outside(x, tri) <= OUTSIDE_TOL
+    converged && worst_reflex(x, tri) <= DENT_SINE && outside(x, tri) <= OUTSIDE_TOL && !folded_flat(x, tri)
+}
+
+/// Whether the mesh lies in a plane (to 1e-5 of its size) without being a doubly covered convex
+/// polygon: its area is more than twice the area of its points' convex hull in that plane.
+///
+/// The dihedral and plane tests cannot see such a state: a fold of 180° has out-of-plane sine
+/// 0, and no vertex lies above the plane of any face. Yet a flat-folded sheet (flaps folded onto
+/// a face, covering parts of the plane four times) is an isometric realization that is not
+/// convex; the only flat convex one (Alexandrov's degenerate case) is a doubly covered convex
+/// polygon, whose area is exactly twice its hull's. Two equilateral triangles glued at a
+/// quarter-perimeter offset ended in such a flat fold, "converged" at volume 0.
+fn folded_flat(x: &[V3], tri: &[Triangulation; 2]) -> bool {
+    let n = x.len() as f64;
+    let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n, s[2] + p[2] / n]);
+    let size = x.iter().map(|p| norm(sub(*p, c))).fold(0.0, f64::max);
+    // Normal of the largest triangle; flat when every vertex is within 1e-5·size of its plane
+    // (a convex body that thin has an area within O(1e-10) of twice its shadow's, far inside the
+    // 1e-6 allowed below, so a thin convex shape is never taken for a fold).
+    let mut best = ([0.0; 3], 0.0);
+    let mut area = 0.0;
+    for t in tri {
+        for &[a, b, d] in &t.tris {
+            let m = cross(sub(x[b], x[a]), sub(x[d], x[a]));
+            let l = norm(m);
+            area += 0.5 * l;
+            if l > best.1 {
+                best = (m, l);
+            }
+        }
+    }
+    if best.1 == 0.0 || size == 0.0 {
+        return false;
+    }
+    let u = best.0.map(|v| v / best.1);
+    if x.iter().any(|p| dot(u, sub(*p, c)).abs() > 1e-5 * size) {
+        return false;
+    }
+    // In-plane coordinates, then the hull's area (Andrew's monotone chain).
+    let e1 = if u[0].abs() < 0.9 { [1.0, 0.0, 0.0] } else { [0.0, 1.0, 0.0] };
+    let e1 = { let w = cross(u, e1); let l = norm(w); w.map(|v| v / l) };
+    let e2 = cross(u, e1);
+    let mut q: Vec<[f64; 2]> = x.iter().map(|p| [dot(sub(*p, c), e1), dot(sub(*p, c), e2)]).collect();
+    q.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+    let mut hull: Vec<[f64; 2]> = Vec::with_capacity(2 * q.len());
+    for pass in 0..2 {
+        let start = hull.len();
+        let it: Box<dyn Iterator<Item = &[f64; 2]>> = if pass == 0 { Box::new(q.iter()) } else { Box::new(q.iter().rev()) };
+        for &p in it {
+            while hull.len() >= start + 2 && metric::orient(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0 {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    let h2: f64 = (0..hull.len()).map(|m| metric::orient([0.0, 0.0], hull[m], hull[(m + 1) % hull.len()])).sum();
+    area > (1.0 + 1e-6) * h2.abs()
 }
 
 /// Largest height of a vertex above the plane of a face (outward), relative to the largest
@@ -677,6 +734,22 @@ const OUTSIDE_TOL: f64 = 1e-2;
 /// failed, and from a start that is exact up to the cone points' error it needs a few dozen).
 const CONE_BUDGET: usize = 300;
 
+/// Places every seam sample between two neighbouring cone points on the straight segment
+/// between their positions, by arc length (see [`cone_restart`]).
+fn reseat(pieces: &SeamPieces, cones: &[usize], x: &mut [V3]) {
+    let n = pieces.n;
+    for (m, &c0) in cones.iter().enumerate() {
+        let c1 = cones[(m + 1) % cones.len()];
+        let span = pieces.chord(0, c0, c1);
+        let mut k = (c0 + 1) % n;
+        while k != c1 && span > 0.0 {
+            let t = pieces.chord(0, c0, k) / span;
+            x[k] = [0, 1, 2].map(|a| x[c0][a] + t * (x[c1][a] - x[c0][a]));
+            k = (k + 1) % n;
+        }
+    }
+}
+
 /// Largest strain of the cone triangulation at the positions a [`cone_restart`] starts from:
 /// it restarts a shape that is isometric but for its folds, not a wrong branch.
 const CONE_NEAR: f64 = 1e-3;
@@ -702,22 +775,54 @@ fn cone_restart(pieces: &SeamPieces, x: &[V3], budget: usize, step_tol: f64, ste
     // chords after 5000 steps). Where a crease does cross the seam this is only a start, and
     // [`is_good`] judges the result like any other.
     let mut xc = x.to_vec();
-    let n = pieces.n;
-    for (m, &c0) in cones.iter().enumerate() {
-        let c1 = cones[(m + 1) % cones.len()];
-        let span = pieces.chord(0, c0, c1);
-        let mut k = (c0 + 1) % n;
-        while k != c1 && span > 0.0 {
-            let t = pieces.chord(0, c0, k) / span;
-            xc[k] = [0, 1, 2].map(|a| x[c0][a] + t * (x[c1][a] - x[c0][a]));
-            k = (k + 1) % n;
-        }
-    }
+    reseat(pieces, &cones, &mut xc);
     let mut t = super::hull::cone_triangulations(&xc, pieces)?;
     let r = relax(pieces, &mut xc, &mut t, budget, step_tol, Orientation::Kept);
     steps.0 += r.iterations;
     steps.1 += r.flips;
     is_good(&xc, &t, r.converged).then_some((xc, t, r.converged))
+}
+
+/// Step budgets of the multistart on the cone points alone ([`solve_polyhedral`]): a handful of
+/// vertices, so every start and its hull restart are cheap.
+const CONES: Patience = Patience { attempt: 300, level: 300, cap: 3000, hull: true };
+
+/// A polyhedral gluing (two polygons, see [`super::hull::cone_vertices`]) solved on its cone
+/// points alone, then laid onto the seam samples.
+///
+/// By Alexandrov's gluing theorem the D-form of two convex polygons is the convex polyhedron
+/// whose vertices are the cone points of the glued metric (the corners; every other seam point
+/// has total angle 2π), unique up to isometry (Pogorelov). The seam between two neighbouring
+/// cone points is straight in both pieces, so the metric is already the polyhedral metric of the
+/// *cone points* as seam vertices: the same isometry equations with a few vertices instead of
+/// `n`, where no sample sits on a flat face or a straight crease. There the multistart and the
+/// hull restarts ([`super::hull::triangulations`]) work as for a smooth seam, while at `n`
+/// samples the flat faces make every dihedral sign between coplanar triangles round-off and the
+/// starts end on folded, isometric but non-convex branches (two equilateral triangles at an
+/// offset: 14 reflex chords at strain 3e-10; a triangle with a square: strain 9 %). Its solution
+/// then places every sample ([`cone_restart`], which keeps only a good result).
+fn solve_polyhedral(pieces: &SeamPieces, cap: usize, steps: &mut (usize, usize)) -> Option<(Vec<V3>, [Triangulation; 2], bool)> {
+    let cones = super::hull::cone_vertices(pieces)?;
+    let k = cones.len();
+    let piece = |p: usize| {
+        let f = &pieces.flat[p];
+        let pts: Vec<[f64; 2]> = cones.iter().map(|&c| f.pts[c]).collect();
+        let arc_mid = (0..k).map(|m| [0.5 * (pts[m][0] + pts[(m + 1) % k][0]), 0.5 * (pts[m][1] + pts[(m + 1) % k][1])]).collect();
+        super::seam::FlatPiece { pts, arc_mid, area: f.area, perimeter: f.perimeter }
+    };
+    let small = SeamPieces { n: k, flat: [piece(0), piece(1)] };
+    let tri = [triangulate(&small, 0).ok()?, triangulate(&small, 1).ok()?];
+    let patience = Patience { cap: CONES.cap.min(cap.saturating_sub(steps.0)) + steps.0, ..CONES };
+    let (xs, _, good, _) = multistart(&small, &tri, 0, STEP_TOL, patience, steps)?;
+    if !good {
+        return None;
+    }
+    let mut x = vec![[0.0; 3]; pieces.n];
+    for (m, &c) in cones.iter().enumerate() {
+        x[c] = xs[m];
+    }
+    reseat(pieces, &cones, &mut x);
+    cone_restart(pieces, &x, CONE_BUDGET, STEP_TOL, steps)
 }
 
 /// Finds the seam positions at `options.resolution` seam vertices, from the warm start or cold
@@ -822,6 +927,11 @@ fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Sol
     let cap = options.max_iterations;
     let quick = Patience { cap: QUICK.cap.min(cap), ..QUICK };
     let mut best = ladder(&samples, &levels, quick, &mut steps)?;
+    if !best.as_ref().is_some_and(|b| b.3) && steps.0 < cap {
+        if let Some((x, tri, converged)) = solve_polyhedral(&samples[samples.len() - 1], cap, &mut steps) {
+            best = Some((x, tri, converged, true));
+        }
+    }
     if !best.as_ref().is_some_and(|b| b.3) && steps.0 < cap {
         let patient = ladder(&samples, &levels, Patience { cap, ..PATIENT }, &mut steps)?;
         if let Some(p) = patient {
