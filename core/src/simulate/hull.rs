@@ -122,7 +122,7 @@ pub fn triangulations(x: &[V3], pieces: &SeamPieces) -> Option<[Triangulation; 2
 const FLAT_CURVATURE: f64 = 1e-9;
 
 /// The seam vertices that are cone points of the glued surface when the gluing is *polyhedral*:
-/// both pieces are polygons, so every seam vertex is either a corner of a piece (a cone point,
+/// both pieces are convex polygons, so every seam vertex is either a corner of a piece (a cone point,
 /// curvature `2π − α_A − α_B > 0`) or a sample on straight sides of both (total angle 2π: a flat
 /// point of the surface). `None` when some piece is curved (more than a quarter of the seam
 /// vertices are cone points) or fewer than four are (a doubly covered polygon at best).
@@ -141,6 +141,10 @@ pub fn cone_vertices(pieces: &SeamPieces) -> Option<Vec<usize>> {
         let ang = (v[0] * u[1] - v[1] * u[0]).atan2(v[0] * u[0] + v[1] * u[1]);
         if ang < 0.0 { ang + std::f64::consts::TAU } else { ang }
     };
+    // Convex pieces only: a reflex corner is a saddle of the surface, not a polyhedron's vertex.
+    if (0..2).any(|p| (0..n).any(|k| angle(p, k) > std::f64::consts::PI + FLAT_CURVATURE)) {
+        return None;
+    }
     let cones: Vec<usize> =
         (0..n).filter(|&k| std::f64::consts::TAU - angle(0, k) - angle(1, k) > FLAT_CURVATURE).collect();
     (cones.len() >= 4 && 4 * cones.len() <= n).then_some(cones)
