@@ -582,3 +582,27 @@ fn two_triangles_at_a_quarter_offset_claim_convergence_only_when_convex() {
         }
     }
 }
+
+/// Regression: the restart of a polygon pair after a failed level had its own 300 steps on top of
+/// the cap, so `stats.iterations` could pass the user's `max_iterations` by that much per level.
+/// Every kind of cold solve (smooth pair, polygon with a curve, polygon pair solved, polygon pair
+/// not solved) stays within the cap, whatever it is.
+#[test]
+fn iterations_never_exceed_max_iterations() {
+    let tri = ngon(3, 30.0, 0.0);
+    let square = rectangle(50.0, 50.0);
+    let square = square.transformed(Affine::scale(perimeter(&tri) / perimeter(&square)));
+    let e = ellipse(40.0, 20.0);
+    let cases = [("ellipse with circle", e.clone(), circle_like(&e), 0.1), ("triangle with square", tri.clone(), square, 0.41), ("two triangles", tri.clone(), tri, 0.25)];
+    for (name, a, b, f) in &cases {
+        for cap in [1, 40, 333, 1200] {
+            let opts = SimulateOptions { offset: f * perimeter(a), resolution: 64, max_iterations: cap, ..Default::default() };
+            let s = simulate(a, b, &opts).expect("simulate");
+            assert!(s.stats.iterations <= cap, "{name}, max_iterations {cap}: wanted ≤ {cap} steps, got {}", s.stats.iterations);
+            // Warm from another offset's shape (a warm start that fails falls back to a cold solve).
+            let warm = SimulateOptions { offset: (f + 0.2) * perimeter(a), warm: Some(s.vertices.clone()), ..opts };
+            let w = simulate(a, b, &warm).expect("simulate");
+            assert!(w.stats.iterations <= cap, "{name} warm, max_iterations {cap}: wanted ≤ {cap} steps, got {}", w.stats.iterations);
+        }
+    }
+}

@@ -845,7 +845,7 @@ fn solve_polyhedral(pieces: &SeamPieces, cap: usize, steps: &mut (usize, usize))
         x[c] = xs[m];
     }
     reseat(pieces, &cones, &mut x);
-    cone_restart(pieces, &x, CONE_BUDGET, STEP_TOL, steps)
+    cone_restart(pieces, &x, CONE_BUDGET.min(cap.saturating_sub(steps.0)), STEP_TOL, steps)
 }
 
 /// Finds the seam positions at `options.resolution` seam vertices, from the warm start or cold
@@ -866,7 +866,13 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
     // the solver into an isometric but dented branch) is dropped for a cold solve rather than
     // returned. "Convex" allows the tiny reflex folds that coarse resolutions keep (the cold
     // solve keeps them too), not a dent.
-    let cold = SimulateOptions { warm: None, ..options.clone() };
+    // The cold solve gets what is left of the user's `max_iterations`.
+    let left = options.max_iterations.saturating_sub(r.iterations);
+    if left == 0 {
+        let converged = r.converged && exact_if_polyhedral(&pieces, &x, &tri);
+        return Ok((pieces, Solution { x, tri, iterations: r.iterations, flips: r.flips, converged }));
+    }
+    let cold = SimulateOptions { warm: None, max_iterations: left, ..options.clone() };
     let (p, mut sol) = solve_cold(glue, &cold)?;
     sol.iterations += r.iterations;
     sol.flips += r.flips;
@@ -889,7 +895,7 @@ fn multistart(
     let mut best: Option<(Vec<V3>, [Triangulation; 2], bool, usize, f64)> = None;
     for (k, &lift) in LIFTS.iter().enumerate().skip(from) {
         let (mut x, mut t) = (initial_guess(pieces, lift), tri.clone());
-        let budget = patience.cap.saturating_sub(steps.0).clamp(1, patience.attempt);
+        let budget = patience.cap.saturating_sub(steps.0).min(patience.attempt);
         let r = relax(pieces, &mut x, &mut t, budget, step_tol, Orientation::Free);
         steps.0 += r.iterations;
         steps.1 += r.flips;
@@ -901,7 +907,7 @@ fn multistart(
         if !good && patience.hull && steps.0 < patience.cap {
             if let Some(mut th) = super::hull::triangulations(&x, pieces) {
                 let mut xh = x.clone();
-                let budget = patience.cap.saturating_sub(steps.0).clamp(1, patience.attempt);
+                let budget = patience.cap.saturating_sub(steps.0).min(patience.attempt);
                 let rh = relax(pieces, &mut xh, &mut th, budget, step_tol, Orientation::Kept);
                 steps.0 += rh.iterations;
                 steps.1 += rh.flips;
@@ -1010,7 +1016,7 @@ fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patience, steps: &
                 let mut xf = upsample(pc, &x, &tri, pf);
                 let remaining = patience.cap.saturating_sub(steps.0);
                 let retry = (from < LIFTS.len() || !final_rung) && remaining > 0;
-                let full = if retry { remaining.min(patience.level) } else { remaining.max(1) };
+                let full = if retry { remaining.min(patience.level) } else { remaining };
                 // A polyhedral gluing gets the cone restart ([`cone_restart`]) after at most a
                 // level's budget, then (on the last try) the rest of the steps.
                 let polyhedral = super::hull::cone_vertices(pf).is_some();
@@ -1023,7 +1029,9 @@ fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patience, steps: &
                 (x, tri, converged) = (xf, tf, r.converged);
                 let mut loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
                 if polyhedral && !is_good(&x, &tri, converged || loose) {
-                    if let Some(c) = cone_restart(pf, &x, CONE_BUDGET.min(patience.level), tol, steps) {
+                    // Within the cap, like every other step (`max_iterations` is the user's).
+                    let left = CONE_BUDGET.min(patience.level).min(patience.cap.saturating_sub(steps.0));
+                    if let Some(c) = (left > 0).then(|| cone_restart(pf, &x, left, tol, steps)).flatten() {
                         (x, tri, converged) = c;
                         loose = false;
                     } else if full > r.iterations {
