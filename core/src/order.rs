@@ -1,9 +1,10 @@
 //! Sorting, through as few instantiations of std's sort as possible.
 //!
-//! Every `sort_by` with its own closure is a separate copy of std's driftsort or ipnsort in the
-//! `.wasm` (4–9 KB each; nine of them were an eighth of the module). The crate sorts only three
-//! kinds of things — `f64` keys, indices and index pairs — so every call site goes through one of
-//! the three functions below, each a single `sort_unstable*` instantiation.
+//! Every `sort_by` with its own closure, and every element type, is a separate copy of std's
+//! driftsort or ipnsort in the `.wasm` (3–9 KB each; nine of them were an eighth of the module).
+//! The crate sorts only three kinds of things — `f64` keys, indices and index pairs — and does so
+//! through two instantiations: [`argsort`] sorts `(f64, usize)` pairs, and indices and index
+//! pairs both become `u64` keys for [`sort_dedup_keys`].
 
 /// The permutation that sorts `keys` ascending by [`f64::total_cmp`]; equal keys keep their
 /// index order (a stable order, from an unstable sort over `(key, index)` pairs, which are all
@@ -20,16 +21,32 @@ pub fn sort_f64(v: &mut Vec<f64>) {
     *v = sorted;
 }
 
-/// Sorts indices ascending and removes repeats.
-pub fn sort_dedup(v: &mut Vec<usize>) {
-    v.sort_unstable();
-    v.dedup();
+/// The one integer sort: ascending, repeats removed. Shared by [`sort_dedup`] and
+/// [`sort_dedup_pairs`] so that std's unstable sort is instantiated once for both (each
+/// instantiation costs 3–7 KB of the `.wasm`).
+fn sort_dedup_keys(keys: &mut Vec<u64>) {
+    keys.sort_unstable();
+    keys.dedup();
 }
 
-/// Sorts index pairs lexicographically and removes repeats.
+/// Sorts indices ascending and removes repeats.
+pub fn sort_dedup(v: &mut Vec<usize>) {
+    let mut keys: Vec<u64> = v.iter().map(|&i| i as u64).collect();
+    sort_dedup_keys(&mut keys);
+    v.clear();
+    v.extend(keys.into_iter().map(|k| k as usize));
+}
+
+/// Sorts index pairs lexicographically and removes repeats. Each pair is one `u64` key,
+/// `i · 2³² + j`, which orders like the pair since both indices are below 2³² (always on
+/// wasm32; natively, more vertices or segments than that would not fit in memory anyway).
 pub fn sort_dedup_pairs(v: &mut Vec<(usize, usize)>) {
-    v.sort_unstable();
-    v.dedup();
+    const LOW: u64 = u32::MAX as u64;
+    assert!(v.iter().all(|&(i, j)| (i | j) as u64 <= LOW), "index pair beyond 2³²");
+    let mut keys: Vec<u64> = v.iter().map(|&(i, j)| (i as u64) << 32 | j as u64).collect();
+    sort_dedup_keys(&mut keys);
+    v.clear();
+    v.extend(keys.into_iter().map(|k| ((k >> 32) as usize, (k & LOW) as usize)));
 }
 
 #[cfg(test)]
@@ -54,8 +71,8 @@ mod tests {
         let mut v = vec![4, 1, 4, 0, 1];
         sort_dedup(&mut v);
         assert_eq!(v, vec![0, 1, 4]);
-        let mut p = vec![(2, 3), (0, 5), (2, 3), (0, 1)];
+        let mut p = vec![(2, 3), (0, 5), (2, 3), (0, 1), (1, 0), (0, u32::MAX as usize)];
         sort_dedup_pairs(&mut p);
-        assert_eq!(p, vec![(0, 1), (0, 5), (2, 3)]);
+        assert_eq!(p, vec![(0, 1), (0, 5), (0, u32::MAX as usize), (1, 0), (2, 3)]);
     }
 }
