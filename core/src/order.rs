@@ -1,10 +1,11 @@
-//! Sorting, through as few instantiations of std's sort as possible.
+//! Sorting (and keying) through as few instantiations of std's generic code as possible.
 //!
 //! Every `sort_by` with its own closure, and every element type, is a separate copy of std's
 //! driftsort or ipnsort in the `.wasm` (3–9 KB each; nine of them were an eighth of the module).
 //! The crate sorts only three kinds of things — `f64` keys, indices and index pairs — and does so
 //! through two instantiations: [`argsort`] sorts `(f64, usize)` pairs, and indices and index
-//! pairs both become `u64` keys for [`sort_dedup_keys`].
+//! pairs both become `u64` keys for [`sort_dedup_keys`]. [`pair_key`] also keys the
+//! simulation's hash maps, which thereby share one `HashMap<u64, usize>` instantiation.
 
 /// The permutation that sorts `keys` ascending by [`f64::total_cmp`]; equal keys keep their
 /// index order (a stable order, from an unstable sort over `(key, index)` pairs, which are all
@@ -37,13 +38,20 @@ pub fn sort_dedup(v: &mut Vec<usize>) {
     v.extend(keys.into_iter().map(|k| k as usize));
 }
 
-/// Sorts index pairs lexicographically and removes repeats. Each pair is one `u64` key,
-/// `i · 2³² + j`, which orders like the pair since both indices are below 2³² (always on
-/// wasm32; natively, more vertices or segments than that would not fit in memory anyway).
+/// An index pair as one `u64`, `i · 2³² + j`, which orders like the pair. Both indices must be
+/// below 2³² (always so on wasm32; natively, more vertices or segments than that would not fit
+/// in memory anyway).
+pub fn pair_key(i: usize, j: usize) -> u64 {
+    assert!((i | j) as u64 <= LOW, "index pair beyond 2³²");
+    (i as u64) << 32 | j as u64
+}
+
+/// The low half of a [`pair_key`]: `j`.
+const LOW: u64 = u32::MAX as u64;
+
+/// Sorts index pairs lexicographically and removes repeats (as [`pair_key`]s).
 pub fn sort_dedup_pairs(v: &mut Vec<(usize, usize)>) {
-    const LOW: u64 = u32::MAX as u64;
-    assert!(v.iter().all(|&(i, j)| (i | j) as u64 <= LOW), "index pair beyond 2³²");
-    let mut keys: Vec<u64> = v.iter().map(|&(i, j)| (i as u64) << 32 | j as u64).collect();
+    let mut keys: Vec<u64> = v.iter().map(|&(i, j)| pair_key(i, j)).collect();
     sort_dedup_keys(&mut keys);
     v.clear();
     v.extend(keys.into_iter().map(|k| ((k >> 32) as usize, (k & LOW) as usize)));
