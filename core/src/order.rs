@@ -75,6 +75,23 @@ mod tests {
     }
 
     #[test]
+    fn argsort_is_std_stable_sort_by_total_cmp() {
+        let pool = [-1.5, -0.0, 0.0, 2.0, f64::NAN, -f64::NAN, f64::INFINITY, -f64::INFINITY, 1e-310, -1e-310, 3.25];
+        let mut state = 12345u64;
+        for n in 0..200 {
+            let keys: Vec<f64> = (0..n)
+                .map(|_| {
+                    state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                    pool[(state >> 33) as usize % pool.len()]
+                })
+                .collect();
+            let mut want: Vec<usize> = (0..n).collect();
+            want.sort_by(|&a, &b| keys[a].total_cmp(&keys[b]));
+            assert_eq!(argsort(&keys), want, "{keys:?}");
+        }
+    }
+
+    #[test]
     fn dedup_helpers_sort_and_remove_repeats() {
         let mut v = vec![4, 1, 4, 0, 1];
         sort_dedup(&mut v);
