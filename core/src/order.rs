@@ -4,7 +4,7 @@
 //! driftsort or ipnsort in the `.wasm` (3–9 KB each; nine of them were an eighth of the module).
 //! The crate sorts only three kinds of things — `f64` keys, indices and index pairs — and does so
 //! through two instantiations: [`argsort`] sorts `(f64, usize)` pairs, and indices and index
-//! pairs both become `u64` keys for [`sort_dedup_keys`]. [`pair_key`] also keys the
+//! pairs both become `u64` keys for [`sort_keys`]. [`pair_key`] also keys the
 //! simulation's hash maps, which thereby share one `HashMap<u64, usize>` instantiation.
 
 /// The permutation that sorts `keys` ascending by [`f64::total_cmp`]; equal keys keep their
@@ -22,11 +22,16 @@ pub fn sort_f64(v: &mut Vec<f64>) {
     *v = sorted;
 }
 
-/// The one integer sort: ascending, repeats removed. Shared by [`sort_dedup`] and
-/// [`sort_dedup_pairs`] so that std's unstable sort is instantiated once for both (each
+/// The one integer sort, ascending. Shared by [`sort_dedup`], [`sort_pairs`] and
+/// [`sort_dedup_pairs`] so that std's unstable sort is instantiated once for all of them (each
 /// instantiation costs 3–7 KB of the `.wasm`).
-fn sort_dedup_keys(keys: &mut Vec<u64>) {
+fn sort_keys(keys: &mut [u64]) {
     keys.sort_unstable();
+}
+
+/// [`sort_keys`], then repeats removed.
+fn sort_dedup_keys(keys: &mut Vec<u64>) {
+    sort_keys(keys);
     keys.dedup();
 }
 
@@ -49,12 +54,26 @@ pub fn pair_key(i: usize, j: usize) -> u64 {
 /// The low half of a [`pair_key`]: `j`.
 const LOW: u64 = u32::MAX as u64;
 
+/// Sorts index pairs lexicographically (as [`pair_key`]s), repeats kept.
+pub fn sort_pairs(v: &mut [(usize, usize)]) {
+    let mut keys: Vec<u64> = v.iter().map(|&(i, j)| pair_key(i, j)).collect();
+    sort_keys(&mut keys);
+    for (pair, k) in v.iter_mut().zip(keys) {
+        *pair = unpair(k);
+    }
+}
+
 /// Sorts index pairs lexicographically and removes repeats (as [`pair_key`]s).
 pub fn sort_dedup_pairs(v: &mut Vec<(usize, usize)>) {
     let mut keys: Vec<u64> = v.iter().map(|&(i, j)| pair_key(i, j)).collect();
     sort_dedup_keys(&mut keys);
     v.clear();
-    v.extend(keys.into_iter().map(|k| ((k >> 32) as usize, (k & LOW) as usize)));
+    v.extend(keys.into_iter().map(unpair));
+}
+
+/// The pair `(i, j)` of a [`pair_key`].
+fn unpair(k: u64) -> (usize, usize) {
+    ((k >> 32) as usize, (k & LOW) as usize)
 }
 
 #[cfg(test)]
@@ -97,6 +116,9 @@ mod tests {
         sort_dedup(&mut v);
         assert_eq!(v, vec![0, 1, 4]);
         let mut p = vec![(2, 3), (0, 5), (2, 3), (0, 1), (1, 0), (0, u32::MAX as usize)];
+        let mut q = p.clone();
+        sort_pairs(&mut q);
+        assert_eq!(q, vec![(0, 1), (0, 5), (0, u32::MAX as usize), (1, 0), (2, 3), (2, 3)]);
         sort_dedup_pairs(&mut p);
         assert_eq!(p, vec![(0, 1), (0, 5), (0, u32::MAX as usize), (1, 0), (2, 3)]);
     }
