@@ -32,7 +32,10 @@ pub fn norm(v: Vec2) -> f64 {
     if s.is_normal() { s.sqrt() } else { v.x.hypot(v.y) }
 }
 
-/// Length of the control polygon p0→p1→p2→p3, an upper bound on the arc length.
+/// Length of the control polygon p0→p1→p2→p3, an upper bound on the arc length. `#[inline]`:
+/// it is on the per-segment hot path, and the WASM build's lower inline threshold
+/// (.cargo/config.toml) would otherwise leave it a call.
+#[inline]
 pub fn control_polygon_len(c: &CubicBez) -> f64 {
     norm(c.p1 - c.p0) + norm(c.p2 - c.p1) + norm(c.p3 - c.p2)
 }

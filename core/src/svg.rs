@@ -101,8 +101,8 @@ impl<'a> Lexer<'a> {
             }
         }
         let text = &self.src[start..self.i];
-        match text.parse::<f64>() {
-            Ok(x) if x.is_finite() => Ok(x),
+        match parse_number(text) {
+            x if x.is_finite() => Ok(x),
             _ => Err(self.err(start, format!("the number {text} is out of range"))),
         }
     }
@@ -126,6 +126,40 @@ impl<'a> Lexer<'a> {
             Some(_) => Err(self.err(self.i, "an arc flag (0 or 1) was expected")),
         }
     }
+}
+
+/// The value of a number the lexer has accepted (`[+-]? digits [. digits] [(e|E) [+-]? digits]`,
+/// at least one mantissa digit), correctly rounded like `str::parse::<f64>`, through
+/// minimal-lexical's compact parser: std's parser carries a 10 KB table of powers of five into
+/// the `.wasm` for speed that path data, a few numbers per segment, does not need.
+fn parse_number(text: &str) -> f64 {
+    let digit_run = |s: &[u8]| s.iter().take_while(|c| c.is_ascii_digit()).count();
+    let (negative, rest) = match text.as_bytes() {
+        [b'-', rest @ ..] => (true, rest),
+        [b'+', rest @ ..] => (false, rest),
+        rest => (false, rest),
+    };
+    let (int, rest) = rest.split_at(digit_run(rest));
+    let (frac, rest) = match rest {
+        [b'.', rest @ ..] => rest.split_at(digit_run(rest)),
+        _ => (&[][..], rest),
+    };
+    let exponent = match rest {
+        [_e, b'-', digits @ ..] => -decimal_i32(digits),
+        [_e, b'+', digits @ ..] | [_e, digits @ ..] => decimal_i32(digits),
+        [] => 0,
+    };
+    // minimal-lexical wants the integer without leading and the fraction without trailing zeros.
+    let int = &int[int.iter().take_while(|&&c| c == b'0').count()..];
+    let frac = &frac[..frac.len() - frac.iter().rev().take_while(|&&c| c == b'0').count()];
+    let x: f64 = minimal_lexical::parse_float(int.iter(), frac.iter(), exponent);
+    if negative { -x } else { x }
+}
+
+/// ASCII decimal digits as an `i32`, saturating: an exponent beyond ±2³¹ over- or underflows
+/// every mantissa short enough to fit in memory anyway.
+fn decimal_i32(digits: &[u8]) -> i32 {
+    digits.iter().fold(0i32, |n, &d| n.saturating_mul(10).saturating_add(i32::from(d - b'0')))
 }
 
 /// Builds subpaths from segments.
@@ -376,4 +410,42 @@ pub fn write(knots: &[Knot], closed: bool) -> String {
         s.push_str(" Z");
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_number;
+    use proptest::prelude::*;
+
+    fn same_as_std(text: &str) {
+        let want: f64 = text.parse().unwrap();
+        let got = parse_number(text);
+        assert_eq!(got.to_bits(), want.to_bits(), "{text}: std gives {want:e}, got {got:e}");
+    }
+
+    #[test]
+    fn numbers_round_like_std() {
+        let long = format!("0.{}1e5", "0".repeat(900));
+        let many = format!("{}.{}", "7".repeat(400), "3".repeat(500));
+        let halfway = format!("9007199254740993.{}1", "0".repeat(800));
+        for text in [
+            "0", "-0", "+0", "0.000", ".5", "5.", "-.5e-3", "1E5", "12e+3", "00012.500e0", "9007199254740993",
+            "2.2250738585072011e-308", "2.2250738585072014e-308", "4.9406564584124654e-324",
+            "2.4703282292062327e-324", "2.4703282292062328e-324", "1.7976931348623157e308",
+            "1.7976931348623158e308", "1.7976931348623159e308", "1e309", "1e-400", "0e999999999999",
+            "1e99999999999", "1e-99999999999", "123456789012345678901234567890", &long, &many, &halfway,
+        ] {
+            same_as_std(text);
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn random_numbers_round_like_std(
+            text in "[+-]?[0-9]{0,40}(\\.[0-9]{0,40})?([eE][+-]?[0-9]{1,3})?"
+                .prop_filter("a mantissa digit", |t| t.split(['e', 'E']).next().is_some_and(|m| m.bytes().any(|c| c.is_ascii_digit())))
+        ) {
+            same_as_std(&text);
+        }
+    }
 }

@@ -27,7 +27,9 @@ pub fn circle(c: Point, r: f64, ccw: bool) -> Contour {
             Knot { anchor, left: anchor - along * (CIRCLE_K * r), right: anchor + along * (CIRCLE_K * r) }
         })
         .collect();
-    Contour::new(knots, 0).expect("four finite knots")
+    // Not `expect`: that would format the error with `Debug`, whose code (the crate's only use of
+    // `Error`'s derived `Debug`) costs ~3 KB of the .wasm for a message nobody sees there.
+    Contour::new(knots, 0).unwrap_or_else(|_| panic!("four finite knots"))
 }
 
 /// The start mark: an isosceles triangle whose apex points at the connector, `apex` being the
@@ -36,8 +38,9 @@ pub fn circle(c: Point, r: f64, ccw: bool) -> Contour {
 pub fn triangle(apex: Point, toward: Vec2, size: f64) -> Contour {
     let base = apex - toward * size;
     let side = Vec2::new(-toward.y, toward.x) * (0.5 * size);
+    // Not `expect`: see `circle`.
     Contour::new(vec![Knot::corner(apex), Knot::corner(base + side), Knot::corner(base - side)], 0)
-        .expect("three finite knots")
+        .unwrap_or_else(|_| panic!("three finite knots"))
 }
 
 /// Text angle in degrees for a label running along the unit tangent `t`, turned by 180° when

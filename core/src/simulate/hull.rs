@@ -57,7 +57,7 @@ fn faces(x: &[V3]) -> Vec<[usize; 3]> {
             continue;
         }
         let mut edges: Vec<(usize, usize)> = seen.iter().flat_map(|f| (0..3).map(move |m| (f[m], f[(m + 1) % 3]))).collect();
-        edges.sort_unstable();
+        crate::order::sort_pairs(&mut edges);
         fs = kept;
         for &(u, v) in &edges {
             if edges.binary_search(&(v, u)).is_err() {

@@ -13,8 +13,8 @@
 //! stores the blocks of `v`'s sorted neighbours `w` (itself included), so entry
 //! `(3w + b, 3v + a)` sits at `base[v] + a·3·deg[v] + 3·rank_v(w) + b`.
 
-use sprs::{CsMat, FillInReduction, PermOwnedI, PermutationCheck, SymmetryCheck};
-use sprs_ldl::{Ldl, LdlNumeric};
+use sprs::{CsMat, PermOwnedI, SymmetryCheck};
+use sprs_ldl::LdlNumeric;
 
 /// The index in the value array of the block (row vertex, column vertex): entry `(b, a)` is at
 /// `at + a·stride + b`.
@@ -51,7 +51,7 @@ pub struct NormalEquations {
     /// Position of each diagonal entry `(k, k)` in the value array.
     diag: Vec<usize>,
     ldl: Option<LdlNumeric<f64, usize>>,
-    /// The fill-reducing ordering ([`vertex_order`]); `None` falls back to sprs-ldl's RCM.
+    /// The fill-reducing ordering ([`vertex_order`]); `None` falls back to the natural order.
     perm: Option<Vec<usize>>,
 }
 
@@ -117,15 +117,11 @@ impl NormalEquations {
         match &mut self.ldl {
             Some(ldl) => ldl.update(view).ok()?,
             None => {
-                let ldl = match &self.perm {
-                    Some(p) => LdlNumeric::new_perm(view, PermOwnedI::new(p.clone()), SymmetryCheck::DontCheckSymmetry),
-                    None => Ldl::new()
-                        .fill_in_reduction(FillInReduction::ReverseCuthillMcKee)
-                        .check_symmetry(SymmetryCheck::DontCheckSymmetry)
-                        .check_perm(PermutationCheck::DontCheckPerm)
-                        .numeric(view),
+                let perm = match &self.perm {
+                    Some(p) => PermOwnedI::new(p.clone()),
+                    None => PermOwnedI::identity(self.n3),
                 };
-                self.ldl = Some(ldl.ok()?);
+                self.ldl = Some(LdlNumeric::new_perm(view, perm, SymmetryCheck::DontCheckSymmetry).ok()?);
             }
         }
         let ldl = self.ldl.as_ref()?;
@@ -145,8 +141,10 @@ impl NormalEquations {
 /// `bench/simulate.bench.mjs` (256 seam vertices) AMD's factor needs 10–30 % fewer
 /// nonzeros and multiplications than sprs-ldl's reverse Cuthill–McKee, and the factorization,
 /// ~80 % of a solve, runs about twice as fast at the same iteration counts. `adj[v]`: `v`'s
-/// sorted neighbours, `v` included. `None` (then RCM is used) if AMD refuses the graph or
-/// returns anything but a permutation.
+/// sorted neighbours, `v` included. `None` if AMD refuses the graph or returns anything but a
+/// permutation; AMD only refuses malformed input, which `adj` never is, so the natural order
+/// used then is a safety net, not a tuned path. (It used to be sprs-ldl's reverse
+/// Cuthill–McKee, whose never-run code cost ~12 KB of the .wasm.)
 fn vertex_order(adj: &[Vec<usize>]) -> Option<Vec<usize>> {
     let n = adj.len();
     let mut ap = Vec::with_capacity(n + 1);
@@ -236,9 +234,9 @@ mod tests {
         let mut ne = NormalEquations::new(24, &strips);
         assert!(ne.perm.is_some(), "AMD gave no ordering for the crossing strips");
         check_against_dense(&mut ne, 24, &strips, "crossing strips, AMD");
-        // The fallback ordering (sprs-ldl's RCM), used if AMD ever refuses a graph.
+        // The fallback ordering (the natural one), used if AMD ever refuses a graph.
         let mut ne = NormalEquations::new(24, &strips);
         ne.perm = None;
-        check_against_dense(&mut ne, 24, &strips, "crossing strips, RCM");
+        check_against_dense(&mut ne, 24, &strips, "crossing strips, natural order");
     }
 }

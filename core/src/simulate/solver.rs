@@ -127,7 +127,7 @@ pub fn reflex_sine(x: &[V3], t: &Triangulation, p: usize, i: usize, j: usize) ->
 /// How often a chord may be flipped away before it is frozen: a chord that keeps coming back
 /// sits between two nearly coplanar triangles (or a non-convex piece), where flipping it again
 /// would only cycle.
-const MAX_FLIPS_PER_EDGE: u8 = 2;
+const MAX_FLIPS_PER_EDGE: usize = 2;
 
 /// Whether a relaxation may mirror the positions to make the volume positive.
 ///
@@ -151,7 +151,9 @@ fn flip_pass(
     x: &mut [V3],
     tri: &mut [Triangulation; 2],
     pieces: &SeamPieces,
-    count: &mut [HashMap<(usize, usize), u8>; 2],
+    // Keyed by `order::pair_key(i, j)`: `HashMap<u64, usize>` is the map type the triangulations
+    // use too, so the .wasm holds one instantiation of the hash table, not two.
+    count: &mut [HashMap<u64, usize>; 2],
     orientation: Orientation,
 ) -> usize {
     if orientation == Orientation::Free {
@@ -162,7 +164,8 @@ fn flip_pass(
         let pts = &pieces.flat[p].pts;
         let s2 = metric::size2(pts);
         for (i, j) in tri[p].chords() {
-            if count[p].get(&(i, j)).is_some_and(|&c| c >= MAX_FLIPS_PER_EDGE) {
+            let key = crate::order::pair_key(i, j);
+            if count[p].get(&key).is_some_and(|&c| c >= MAX_FLIPS_PER_EDGE) {
                 continue;
             }
             let Some(s) = reflex_sine(x, &tri[p], p, i, j) else { continue };
@@ -177,7 +180,7 @@ fn flip_pass(
                 continue;
             }
             if tri[p].flip(i, j, pts, s2) {
-                *count[p].entry((i, j)).or_insert(0) += 1;
+                *count[p].entry(key).or_insert(0) += 1;
                 flips += 1;
             }
         }
