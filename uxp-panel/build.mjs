@@ -37,7 +37,8 @@ async function buildWasm() {
   const targetDir =
     process.env.DFORMER_PANEL_TARGET_DIR ||
     (process.env.CARGO_TARGET_DIR ? `${process.env.CARGO_TARGET_DIR}-cep-mvp` : join(repo, 'target', 'cep-mvp'));
-  const env = { ...process.env, CARGO_TARGET_DIR: targetDir, RUSTFLAGS: '-C target-cpu=mvp' };
+  // RUSTFLAGS replaces .cargo/config.toml's wasm32 flags, so its inline threshold is repeated here.
+  const env = { ...process.env, CARGO_TARGET_DIR: targetDir, RUSTFLAGS: '-C target-cpu=mvp -C llvm-args=-inline-threshold=100' };
   const cargoArgs = ['build', '-p', 'dformer', '--lib', '--target', 'wasm32-unknown-unknown'];
   if (!dev) cargoArgs.push('--release');
   console.log(`[panel] cargo ${cargoArgs.join(' ')}  (RUSTFLAGS=${env.RUSTFLAGS}, target dir ${targetDir})`);
