@@ -165,12 +165,13 @@ fn area2(pts: &[[f64; 2]], idx: &[usize]) -> f64 {
 /// stays in one piece it is a chord of that piece (the usual case: the 90×10 rectangle with a
 /// square at 128 and at 160 seam vertices has all six interior creases so); one that crosses the
 /// seam at a flat point is not a chord at all, and this restart then simply fails the caller's
-/// checks. Of the two pieces' chords between the same cone points only the shorter can be an
-/// edge (the straight segment is at most as long as the path across the other piece, see the
-/// solver's `excess`), so each hull edge goes to the piece with the shorter chord, when that
-/// chord is within a few per cent of its 3D length (a hull edge of a shape far off is not a
-/// crease). Each piece's polygon is cut along its creases and the parts ear-clipped: every
-/// triangle then lies in one face of the polyhedron (flat parts are triangulated any way), so
+/// checks (the solver then adds such crossings as seam vertices: `seam_crossings`). Of the two
+/// pieces' chords between the same cone points only the shorter can be an edge (the straight
+/// segment is at most as long as the path across the other piece, see the solver's `excess`),
+/// so each hull edge goes to the piece with the shorter chord, when that chord is within a few
+/// per cent of its 3D length (a hull edge of a shape far off is not a crease). Each piece's
+/// polygon is cut along its creases and the parts ear-clipped ([`cut_along`]): every triangle
+/// then lies in one face of the polyhedron (flat parts are triangulated any way), so
 /// the isometry equations have the convex polyhedron as an exact solution, which the local
 /// flips, deciding by dihedral signs that are round-off on coplanar triangles, cannot reach
 /// (a 90×10 rectangle with a square stalled folded, strain 1.2e-7 with 5000 steps and flips).
@@ -214,6 +215,13 @@ pub fn cone_triangulations(x: &[V3], pieces: &SeamPieces) -> Option<[Triangulati
         }
         chords[p].push((u, v));
     }
+    cut_along(pieces, &chords)
+}
+
+/// Each piece's polygon cut along its chords (pairs of seam vertices, non-crossing) and the
+/// parts ear-clipped, or `None` when the chords do not cut it into simple parts.
+pub fn cut_along(pieces: &SeamPieces, chords: &[Vec<(usize, usize)>; 2]) -> Option<[Triangulation; 2]> {
+    let n = pieces.n;
     let mut out: Vec<Triangulation> = Vec::with_capacity(2);
     for p in 0..2 {
         let pts = &pieces.flat[p].pts;
