@@ -699,8 +699,11 @@ fn folded_flat(x: &[V3], tri: &[Triangulation; 2]) -> bool {
     let e1 = if u[0].abs() < 0.9 { [1.0, 0.0, 0.0] } else { [0.0, 1.0, 0.0] };
     let e1 = { let w = cross(u, e1); let l = norm(w); w.map(|v| v / l) };
     let e2 = cross(u, e1);
-    let mut q: Vec<[f64; 2]> = x.iter().map(|p| [dot(sub(*p, c), e1), dot(sub(*p, c), e2)]).collect();
-    q.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+    let q: Vec<[f64; 2]> = x.iter().map(|p| [dot(sub(*p, c), e1), dot(sub(*p, c), e2)]).collect();
+    // Lexicographic (x, then y) order by two stable argsorts, y first (the crate's one f64 sort,
+    // see crate::order).
+    let by_y: Vec<[f64; 2]> = crate::order::argsort(&q.iter().map(|p| p[1]).collect::<Vec<_>>()).into_iter().map(|i| q[i]).collect();
+    let q: Vec<[f64; 2]> = crate::order::argsort(&by_y.iter().map(|p| p[0]).collect::<Vec<_>>()).into_iter().map(|i| by_y[i]).collect();
     let mut hull: Vec<[f64; 2]> = Vec::with_capacity(2 * q.len());
     for pass in 0..2 {
         let start = hull.len();
