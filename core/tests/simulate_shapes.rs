@@ -508,6 +508,24 @@ fn assert_polyhedral_pair_converges(name: &str, a: &Contour, b: &Contour, offset
     v.abs()
 }
 
+/// [`assert_polyhedral_pair_converges`] at each of `resolutions`, with one volume (to 1e-8) at
+/// all of them: the polyhedron is exact at any sampling that holds its vertices, so its volume
+/// does not depend on the sampling (resolutions that are no refinement of each other included).
+fn assert_exact_polyhedron(name: &str, a: &Contour, b: &Contour, offset: f64, resolutions: &[usize]) {
+    let v: Vec<f64> = resolutions.iter().map(|&n| assert_polyhedral_pair_converges(name, a, b, offset, n)).collect();
+    for (n, vn) in resolutions.iter().zip(&v).skip(1) {
+        assert!((vn / v[0] - 1.0).abs() < 1e-8, "{name} at offset {offset}: volume {vn} at {n} seam vertices, {} at {}", v[0], resolutions[0]);
+    }
+}
+
+/// An equilateral triangle (circumradius 30, turned by 0.3) and a square of the same perimeter.
+fn triangle_and_square() -> (Contour, Contour) {
+    let a = ngon(3, 30.0, 0.3);
+    let b = rectangle(50.0, 50.0);
+    let b = b.transformed(Affine::scale(perimeter(&a) / perimeter(&b)));
+    (a, b)
+}
+
 /// Regression: a 90×10 rectangle glued to a square (equal perimeters) at offset 0 (and 1/4,
 /// the same gluing by the square's symmetry) ended unconverged (strain 1.2e-7, two reflex
 /// chords, 5000 steps): a strip between a corner and two samples of a straight side was
@@ -523,12 +541,8 @@ fn thin_rectangle_with_square_converges_at_every_offset() {
     for f in [0.13, 0.41] {
         assert_polyhedral_pair_converges("90×10 with a square", &a, &b, f, 128);
     }
-    let v128 = assert_polyhedral_pair_converges("90×10 with a square", &a, &b, 0.0, 128);
-    let v160 = assert_polyhedral_pair_converges("90×10 with a square", &a, &b, 0.0, 160);
-    assert!((v128 / v160 - 1.0).abs() < 1e-8, "volume at 128 and 160 seam vertices: {v128} vs {v160}");
     // At 48 it "converged" with three reflex chords at volume 7,961 (a fold DENT_SINE let pass).
-    let v48 = assert_polyhedral_pair_converges("90×10 with a square", &a, &b, 0.0, 48);
-    assert!((v48 / v128 - 1.0).abs() < 1e-8, "volume at 48 and 128 seam vertices: {v48} vs {v128}");
+    assert_exact_polyhedron("90×10 with a square", &a, &b, 0.0, &[128, 160, 48]);
 }
 
 /// A regular m-gon of circumradius r turned by `rot`.
@@ -545,21 +559,15 @@ fn ngon(m: usize, r: f64, rot: f64) -> Contour {
 #[test]
 fn two_triangles_at_an_offset_converge() {
     let (a, b) = (ngon(3, 30.0, 0.0), ngon(3, 30.0, 0.0));
-    let v128 = assert_polyhedral_pair_converges("two triangles", &a, &b, 0.13, 128);
-    let v160 = assert_polyhedral_pair_converges("two triangles", &a, &b, 0.13, 160);
-    assert!((v128 / v160 - 1.0).abs() < 1e-8, "volume at 128 and 160 seam vertices: {v128} vs {v160}");
+    assert_exact_polyhedron("two triangles", &a, &b, 0.13, &[128, 160]);
 }
 
 /// Regression: an equilateral triangle glued to a square at 0.13 of the perimeter ended
 /// unconverged (strain 9 %, 38 reflex chords); see `two_triangles_at_an_offset_converge`.
 #[test]
 fn triangle_with_square_converges_at_an_offset() {
-    let a = ngon(3, 30.0, 0.3);
-    let b = rectangle(50.0, 50.0);
-    let b = b.transformed(Affine::scale(perimeter(&a) / perimeter(&b)));
-    let v128 = assert_polyhedral_pair_converges("triangle with a square", &a, &b, 0.13, 128);
-    let v96 = assert_polyhedral_pair_converges("triangle with a square", &a, &b, 0.13, 96);
-    assert!((v128 / v96 - 1.0).abs() < 1e-8, "volume at 128 and 96 seam vertices: {v128} vs {v96}");
+    let (a, b) = triangle_and_square();
+    assert_exact_polyhedron("triangle with a square", &a, &b, 0.13, &[128, 96]);
 }
 
 /// Regression: two equilateral triangles at a quarter-perimeter offset "converged" to volume 0
@@ -575,11 +583,7 @@ fn triangle_with_square_converges_at_an_offset() {
 #[test]
 fn two_triangles_at_a_quarter_offset_converge() {
     let (a, b) = (ngon(3, 30.0, 0.0), ngon(3, 30.0, 0.0));
-    let v128 = assert_polyhedral_pair_converges("two triangles", &a, &b, 0.25, 128);
-    let v96 = assert_polyhedral_pair_converges("two triangles", &a, &b, 0.25, 96);
-    assert!((v128 / v96 - 1.0).abs() < 1e-8, "volume at 128 and 96 seam vertices: {v128} vs {v96}");
-    let v52 = assert_polyhedral_pair_converges("two triangles", &a, &b, 0.25, 52);
-    assert!((v52 / v128 - 1.0).abs() < 1e-8, "volume at 52 and 128 seam vertices: {v52} vs {v128}");
+    assert_exact_polyhedron("two triangles", &a, &b, 0.25, &[128, 96, 52]);
 }
 
 /// Regression: two equilateral triangles at 0.41 of the perimeter ended unconverged (strain
@@ -587,9 +591,7 @@ fn two_triangles_at_a_quarter_offset_converge() {
 #[test]
 fn two_triangles_at_an_offset_of_0_41_converge() {
     let (a, b) = (ngon(3, 30.0, 0.0), ngon(3, 30.0, 0.0));
-    let v128 = assert_polyhedral_pair_converges("two triangles", &a, &b, 0.41, 128);
-    let v96 = assert_polyhedral_pair_converges("two triangles", &a, &b, 0.41, 96);
-    assert!((v128 / v96 - 1.0).abs() < 1e-8, "volume at 128 and 96 seam vertices: {v128} vs {v96}");
+    assert_exact_polyhedron("two triangles", &a, &b, 0.41, &[128, 96]);
 }
 
 /// Regression: an equilateral triangle with a square at 0.41 of the perimeter ended unconverged
@@ -597,12 +599,8 @@ fn two_triangles_at_an_offset_of_0_41_converge() {
 /// polyhedron cross the seam between corners (see `two_triangles_at_a_quarter_offset_converge`).
 #[test]
 fn triangle_with_square_at_an_offset_of_0_41_converges() {
-    let a = ngon(3, 30.0, 0.3);
-    let b = rectangle(50.0, 50.0);
-    let b = b.transformed(Affine::scale(perimeter(&a) / perimeter(&b)));
-    let v128 = assert_polyhedral_pair_converges("triangle with a square", &a, &b, 0.41, 128);
-    let v96 = assert_polyhedral_pair_converges("triangle with a square", &a, &b, 0.41, 96);
-    assert!((v128 / v96 - 1.0).abs() < 1e-8, "volume at 128 and 96 seam vertices: {v128} vs {v96}");
+    let (a, b) = triangle_and_square();
+    assert_exact_polyhedron("triangle with a square", &a, &b, 0.41, &[128, 96]);
 }
 
 /// Regression: the restart of a polygon pair after a failed level had its own 300 steps on top of
@@ -611,11 +609,9 @@ fn triangle_with_square_at_an_offset_of_0_41_converges() {
 /// not solved) stays within the cap, whatever it is.
 #[test]
 fn iterations_never_exceed_max_iterations() {
-    let tri = ngon(3, 30.0, 0.0);
-    let square = rectangle(50.0, 50.0);
-    let square = square.transformed(Affine::scale(perimeter(&tri) / perimeter(&square)));
+    let (tri, square) = triangle_and_square();
     let e = ellipse(40.0, 20.0);
-    let cases = [("ellipse with circle", e.clone(), circle_like(&e), 0.1), ("triangle with square", tri.clone(), square, 0.41), ("two triangles", tri.clone(), tri, 0.25)];
+    let cases = [("ellipse with circle", e.clone(), circle_like(&e), 0.1), ("triangle with square", tri, square, 0.41), ("two triangles", ngon(3, 30.0, 0.0), ngon(3, 30.0, 0.0), 0.25)];
     for (name, a, b, f) in &cases {
         for cap in [1, 40, 333, 1200] {
             let opts = SimulateOptions { offset: f * perimeter(a), resolution: 64, max_iterations: cap, ..Default::default() };
