@@ -95,7 +95,7 @@ impl Glue {
     /// A's first anchor. A corner with no free sample near it (several corners within one step)
     /// keeps the step.
     ///
-    /// Nested: for even `n` with `n/2` at least the solver's coarsest level, the samples are those
+    /// Nested: for even `n` with `n/2` a level of the ladder ([`Glue::nests`]), the samples are those
     /// of `n/2` and the midpoints between them, so a corner is sample `2m` when it is sample `m`
     /// one level down (samples then move by up to a step of the coarsest such level). The
     /// solver's coarse-to-fine ladder needs this: when a corner fell on sample 2m + 1 at the finer
@@ -104,7 +104,7 @@ impl Glue {
     /// three collinear samples): a 57×43 rectangle with a circle converged at 128 seam vertices
     /// and ended dented at 256.
     pub fn positions(&self, n: usize) -> Vec<f64> {
-        if n % 2 == 0 && n / 2 >= super::solver::COARSEST {
+        if n % 2 == 0 && self.nests(n / 2) {
             // Nested (see the docs above): the coarser level's samples and their midpoints.
             let total = self.ta.total();
             let c = self.positions(n / 2);
@@ -154,6 +154,32 @@ impl Glue {
             }
         }
         u
+    }
+
+    /// Whether `m` seam samples can be a level of the coarse-to-fine ladder, and so the coarser
+    /// half of a nested sampling ([`Glue::positions`]): at least the solver's coarsest level, and
+    /// at least 3/2 samples per distinct corner.
+    ///
+    /// A level with fewer samples than that cannot give every corner its own sample at an even
+    /// spacing. Outlines flattened into polylines (CAD and laser-cutter SVGs, Inkscape's
+    /// "Flatten Beziers") have dozens of corners of small turn; with 72 of them on 32 samples,
+    /// each snapped corner moved its sample by up to a step, and the next level's midpoints (or
+    /// the corners left over, on the midpoint of their interval) made seam edges from almost
+    /// nothing to two steps long. The ladder from such a level ended in a wrong branch (a
+    /// 72-point polyline ellipse with a circle: strain 0.27 from 64 seam vertices up, while a
+    /// single level of 48 or 64, corners snapped to their nearest sample, converged in 17–44
+    /// steps). So the ladder starts at the first level with room for the corners, which snaps
+    /// them at nearly even steps, and the finer levels nest on it as before. The room of 3/2,
+    /// measured: at one sample per corner a 64-gon with a circle still started at 64 with 64
+    /// corners (up to 2.5 times slower, and a 24-gon at 32 with 24 ended at strain 3e-3 as before);
+    /// at two the 72-point ellipse had to start at 256 and ran out of steps there; at 3/2 it
+    /// starts at 128 and converges at 128 and 256. Outlines with at most 21 corners (every
+    /// polygon test and the bench) keep the ladder from 32, unchanged.
+    pub fn nests(&self, m: usize) -> bool {
+        // Both pieces' corners at one seam point take one sample (see `positions`).
+        let same = 1e-3 * self.ta.total() / m as f64;
+        let distinct = self.corners.iter().enumerate().filter(|&(i, &c)| i == 0 || c - self.corners[i - 1] > same).count();
+        m >= super::solver::COARSEST && 2 * m >= 3 * distinct
     }
 
     pub fn perimeter(&self) -> f64 {
