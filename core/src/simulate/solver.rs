@@ -637,7 +637,7 @@ fn refine(tc: &[Triangulation; 2], pieces: &SeamPieces, p: usize) -> Result<Tria
 /// Whether a solution is the convex isometric one: converged, without a dent, and convex as a
 /// whole ([`outside`] within [`OUTSIDE_TOL`]).
 fn is_good(x: &[V3], tri: &[Triangulation; 2], converged: bool) -> bool {
-    converged && worst_reflex(x, tri) <= DENT_SINE && outside(x, tri) <= OUTSIDE_TOL && !folded_flat(x, tri)
+    converged && worst_reflex(x, tri) <= DENT_SINE && outside_sampled(x, tri) <= OUTSIDE_TOL && !folded_flat(x, tri)
 }
 
 /// For a polyhedral gluing (two convex polygons, [`super::hull::cone_vertices`]): whether the
@@ -657,7 +657,7 @@ fn is_good(x: &[V3], tri: &[Triangulation; 2], converged: bool) -> bool {
 /// each such crossing it can find, see [`seam_crossings`]).
 fn exact_if_polyhedral(pieces: &SeamPieces, x: &[V3], tri: &[Triangulation; 2]) -> bool {
     super::hull::cone_vertices(pieces).is_none()
-        || (worst_reflex(x, tri) <= super::stats::REFLEX_REPORT && outside(x, tri) <= OUTSIDE_TOL && !folded_flat(x, tri))
+        || (worst_reflex(x, tri) <= super::stats::REFLEX_REPORT && outside_sampled(x, tri) <= OUTSIDE_TOL && !folded_flat(x, tri))
 }
 
 /// Whether the mesh lies in a plane (to 1e-5 of its size) without being a doubly covered convex
@@ -721,21 +721,18 @@ fn folded_flat(x: &[V3], tri: &[Triangulation; 2]) -> bool {
 }
 
 /// Largest height of a vertex above the plane of a face (outward), relative to the largest
-/// distance of a vertex from the centroid: 0 for a convex mesh.
+/// distance of a vertex from the centroid: 0 for a convex mesh. Every `stride`-th vertex is
+/// tested against every face.
 ///
 /// No reflex chord is not enough: every chord can fold outward while the surface as a whole is
 /// not convex (a locally convex but not embedded realization). A triangle glued to a circle ended
 /// there, converged and with no reflex chord, 2 % below the convex shape's volume and with
 /// vertices a whole size outside some face's plane. A closed surface that is convex at every
 /// edge and embedded is convex (Hadamard), so the two tests together rule out such branches.
-fn outside(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
+fn outside(x: &[V3], tri: &[Triangulation; 2], stride: usize) -> f64 {
     let n = x.len() as f64;
     let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n, s[2] + p[2] / n]);
     let size = x.iter().map(|p| norm(sub(*p, c))).fold(0.0, f64::max);
-    // Against every face, 32 vertices spread along the seam: the test is for whole-shape
-    // failures (a vertex a sizeable fraction of the size outside), which no 32 of them all miss,
-    // and it keeps the cost at 32·(2n − 4) plane tests, nothing next to a solver step.
-    let stride = (x.len() / 32).max(1);
     let mut worst = 0.0f64;
     for (p, t) in tri.iter().enumerate() {
         for &[a, b, c] in &t.tris {
@@ -745,43 +742,29 @@ fn outside(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
             if l == 0.0 {
                 continue;
             }
-            let top = x.iter().step_by(stride).map(|q| dot(m, sub(*q, x[a]))).fold(0.0, f64::max);
+            let top = x.iter().step_by(stride.max(1)).map(|q| dot(m, sub(*q, x[a]))).fold(0.0, f64::max);
             worst = worst.max(top / l);
         }
     }
     if size > 0.0 { worst / size } else { 0.0 }
 }
 
-/// Whether every vertex (not only [`outside`]'s 32) is within [`OUTSIDE_TOL`] of every face:
-/// the test of a finest-level answer before it is called converged, run once per answer
-/// (2n² plane tests, on the coordinates laid out by axis so that the inner loop vectorizes).
-/// A nearly flat form (a 24-gon or a 48-gon glued to a circle, nearly congruent pieces) can
-/// fold a rim face up so that a few vertices stand a whole size above its plane while the 32
-/// that [`outside`] samples do not: such shapes "converged" at 64 and 128 seam vertices with
-/// 32–40 reflex chords and a vertex 1.8 sizes outside a face.
+/// [`outside`] for the solver's loops: against every face, 32 vertices spread along the seam.
+/// The test is for whole-shape failures (a vertex a sizeable fraction of the size outside), which
+/// no 32 of them all miss, and it keeps the cost at 32·(2n − 4) plane tests, nothing next to a
+/// solver step.
+fn outside_sampled(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
+    outside(x, tri, x.len() / 32)
+}
+
+/// Whether every vertex (not only [`outside_sampled`]'s 32) is within [`OUTSIDE_TOL`] of every
+/// face: the test of a finest-level answer before it is called converged, run once per answer
+/// (2n² plane tests). A nearly flat form (a 24-gon or a 48-gon glued to a circle, nearly
+/// congruent pieces) can fold a rim face up so that a few vertices stand a whole size above its
+/// plane while the 32 sampled ones do not: such shapes "converged" at 64 and 128 seam vertices
+/// with 32–40 reflex chords and a vertex 1.8 sizes outside a face.
 fn convex_as_a_whole(x: &[V3], tri: &[Triangulation; 2]) -> bool {
-    let n = x.len() as f64;
-    let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n, s[2] + p[2] / n]);
-    let size = x.iter().map(|p| norm(sub(*p, c))).fold(0.0, f64::max);
-    let axis = |a: usize| -> Vec<f64> { x.iter().map(|p| p[a]).collect() };
-    let (px, py, pz) = (axis(0), axis(1), axis(2));
-    for (p, t) in tri.iter().enumerate() {
-        for &[a, b, c] in &t.tris {
-            let (b, c) = if p == 0 { (b, c) } else { (c, b) };
-            let m = cross(sub(x[b], x[a]), sub(x[c], x[a]));
-            let l = norm(m);
-            if l == 0.0 {
-                continue;
-            }
-            // Height of q above the face: (m·q − m·x_a) / |m|, against OUTSIDE_TOL·size.
-            let limit = dot(m, x[a]) + OUTSIDE_TOL * size * l;
-            let top = (0..px.len()).map(|q| m[0] * px[q] + m[1] * py[q] + m[2] * pz[q]).fold(f64::NEG_INFINITY, f64::max);
-            if top > limit {
-                return false;
-            }
-        }
-    }
-    true
+    outside(x, tri, 1) <= OUTSIDE_TOL
 }
 
 /// Relative height above a face (see [`outside`]) that makes a solution non-convex: far above the
