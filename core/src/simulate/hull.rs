@@ -27,8 +27,7 @@ fn faces(x: &[V3]) -> Vec<[usize; 3]> {
     if n < 4 {
         return Vec::new();
     }
-    let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n as f64, s[1] + p[1] / n as f64, s[2] + p[2] / n as f64]);
-    let size = x.iter().map(|p| dot(sub(*p, c), sub(*p, c))).fold(0.0, f64::max).sqrt();
+    let (_, size) = super::solver::centroid_and_radius(x);
     let eps = 1e-9 * size;
     // Tetrahedron: the farthest point from x[0], the farthest from that line, the farthest from that plane.
     let far = |f: &dyn Fn(V3) -> f64| (0..n).max_by(|&a, &b| f(x[a]).total_cmp(&f(x[b]))).unwrap_or(0);

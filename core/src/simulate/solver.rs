@@ -101,11 +101,22 @@ pub fn signed_volume(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
     v / 6.0
 }
 
+/// Centroid of a point set (the mean of its points).
+pub(super) fn centroid(x: &[V3]) -> V3 {
+    let n = x.len() as f64;
+    x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n, s[2] + p[2] / n])
+}
+
+/// The centroid of a point set and the largest distance of a point from it.
+pub(super) fn centroid_and_radius(x: &[V3]) -> (V3, f64) {
+    let c = centroid(x);
+    (c, x.iter().map(|p| norm(sub(*p, c))).fold(0.0, f64::max))
+}
+
 /// Size scale of a point set (RMS distance to the centroid).
 fn size(x: &[V3]) -> f64 {
-    let n = x.len() as f64;
-    let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n, s[2] + p[2] / n]);
-    (x.iter().map(|p| dot(sub(*p, c), sub(*p, c))).sum::<f64>() / n).sqrt()
+    let c = centroid(x);
+    (x.iter().map(|p| dot(sub(*p, c), sub(*p, c))).sum::<f64>() / x.len() as f64).sqrt()
 }
 
 /// Out-of-plane sine of chord i–j in piece `p`: positive when reflex (the far vertex of the
@@ -670,9 +681,7 @@ fn exact_if_polyhedral(pieces: &SeamPieces, x: &[V3], tri: &[Triangulation; 2]) 
 /// polygon, whose area is exactly twice its hull's. Two equilateral triangles glued at a
 /// quarter-perimeter offset ended in such a flat fold, "converged" at volume 0.
 fn folded_flat(x: &[V3], tri: &[Triangulation; 2]) -> bool {
-    let n = x.len() as f64;
-    let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n, s[2] + p[2] / n]);
-    let size = x.iter().map(|p| norm(sub(*p, c))).fold(0.0, f64::max);
+    let (c, size) = centroid_and_radius(x);
     // Normal of the largest triangle; flat when every vertex is within 1e-5·size of its plane
     // (a convex body that thin has an area within O(1e-10) of twice its shadow's, far inside the
     // 1e-6 allowed below, so a thin convex shape is never taken for a fold).
@@ -730,9 +739,7 @@ fn folded_flat(x: &[V3], tri: &[Triangulation; 2]) -> bool {
 /// vertices a whole size outside some face's plane. A closed surface that is convex at every
 /// edge and embedded is convex (Hadamard), so the two tests together rule out such branches.
 fn outside(x: &[V3], tri: &[Triangulation; 2], stride: usize) -> f64 {
-    let n = x.len() as f64;
-    let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n, s[2] + p[2] / n]);
-    let size = x.iter().map(|p| norm(sub(*p, c))).fold(0.0, f64::max);
+    let (_, size) = centroid_and_radius(x);
     let mut worst = 0.0f64;
     for (p, t) in tri.iter().enumerate() {
         for &[a, b, c] in &t.tris {
@@ -1328,8 +1335,7 @@ fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patience, steps: &
 /// from the mismatch start pushed onto the sphere every time (in ~15 steps), from the plain
 /// mismatch start never, and from the saddle and fourfold starts in 3–11 of 196.
 fn on_sphere(mut x: Vec<V3>) -> Vec<V3> {
-    let n = x.len() as f64;
-    let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n, s[2] + p[2] / n]);
+    let c = centroid(&x);
     let r = size(&x);
     for p in x.iter_mut() {
         let d = sub(*p, c);
