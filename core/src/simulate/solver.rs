@@ -478,6 +478,15 @@ struct Relaxed {
     converged: bool,
 }
 
+impl Relaxed {
+    /// Adds this relaxation's steps and flips to a cold solve's running `(steps, flips)`.
+    fn tally(self, steps: &mut (usize, usize)) -> Self {
+        steps.0 += self.iterations;
+        steps.1 += self.flips;
+        self
+    }
+}
+
 /// Levenberg–Marquardt on a fixed triangulation until the step is negligible, then one pass of
 /// flips; repeated until nothing flips. `step_tol` is relative to the shape's size.
 fn relax(
@@ -825,9 +834,7 @@ fn cone_restart(pieces: &SeamPieces, x: &[V3], budget: usize, step_tol: f64, ste
     let mut xc = x.to_vec();
     reseat(pieces, &cones, &mut xc);
     let mut t = super::hull::cone_triangulations(&xc, pieces)?;
-    let r = relax(pieces, &mut xc, &mut t, budget, step_tol, Orientation::Kept);
-    steps.0 += r.iterations;
-    steps.1 += r.flips;
+    let r = relax(pieces, &mut xc, &mut t, budget, step_tol, Orientation::Kept).tally(steps);
     is_good(&xc, &t, r.converged).then_some((xc, t, r.converged))
 }
 
@@ -921,9 +928,7 @@ fn solve_polyhedral(pieces: &SeamPieces, cap: usize, steps: &mut (usize, usize))
             return None;
         }
         let (mut x, mut t) = (on_sphere(initial_guess(&big, start)), tri.clone());
-        let r = relax(&big, &mut x, &mut t, budget, STEP_TOL, Orientation::Free);
-        steps.0 += r.iterations;
-        steps.1 += r.flips;
+        let r = relax(&big, &mut x, &mut t, budget, STEP_TOL, Orientation::Free).tally(steps);
         if is_good(&x, &t, r.converged) {
             return lay_on(pieces, &idx, &cones, &x, &t, cap, steps);
         }
@@ -1004,9 +1009,7 @@ fn lay_on(
     let chords = [0, 1].map(|p| ts[p].chords().into_iter().map(|(u, v)| (at[u], at[v])).collect::<Vec<_>>());
     let mut t = super::hull::cut_along(&moved, &chords)?;
     let budget = CONE_BUDGET.min(cap.saturating_sub(steps.0));
-    let r = relax(&moved, &mut x, &mut t, budget, STEP_TOL, Orientation::Kept);
-    steps.0 += r.iterations;
-    steps.1 += r.flips;
+    let r = relax(&moved, &mut x, &mut t, budget, STEP_TOL, Orientation::Kept).tally(steps);
     is_good(&x, &t, r.converged).then_some((moved, x, t, r.converged))
 }
 
@@ -1148,9 +1151,7 @@ fn multistart(
     for (k, &lift) in LIFTS.iter().enumerate().skip(from) {
         let (mut x, mut t) = (initial_guess(pieces, lift), tri.clone());
         let budget = patience.cap.saturating_sub(steps.0).min(patience.attempt);
-        let r = relax(pieces, &mut x, &mut t, budget, step_tol, Orientation::Free);
-        steps.0 += r.iterations;
-        steps.1 += r.flips;
+        let r = relax(pieces, &mut x, &mut t, budget, step_tol, Orientation::Free).tally(steps);
         let mut strain = max_strain(&x, &bars(pieces, &t));
         let mut good = is_good(&x, &t, r.converged || (step_tol > STEP_TOL && strain <= LEVEL_STRAIN_TOL));
         let mut converged = r.converged;
@@ -1160,9 +1161,7 @@ fn multistart(
             if let Some(mut th) = super::hull::triangulations(&x, pieces) {
                 let mut xh = x.clone();
                 let budget = patience.cap.saturating_sub(steps.0).min(patience.attempt);
-                let rh = relax(pieces, &mut xh, &mut th, budget, step_tol, Orientation::Kept);
-                steps.0 += rh.iterations;
-                steps.1 += rh.flips;
+                let rh = relax(pieces, &mut xh, &mut th, budget, step_tol, Orientation::Kept).tally(steps);
                 let sh = max_strain(&xh, &bars(pieces, &th));
                 if sh < strain {
                     (x, t, strain, converged) = (xh, th, sh, rh.converged);
@@ -1285,9 +1284,7 @@ fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patience, steps: &
                 let budget = if polyhedral { full.min(patience.level) } else { full };
                 let last = li + 1 == levels.len();
                 let tol = if last { STEP_TOL } else { 1e-6 };
-                let r = relax(pf, &mut xf, &mut tf, budget, tol, Orientation::Kept);
-                steps.0 += r.iterations;
-                steps.1 += r.flips;
+                let r = relax(pf, &mut xf, &mut tf, budget, tol, Orientation::Kept).tally(steps);
                 (x, tri, converged) = (xf, tf, r.converged);
                 let mut loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
                 if polyhedral && !is_good(&x, &tri, converged || loose) {
@@ -1297,9 +1294,7 @@ fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patience, steps: &
                         (x, tri, converged) = c;
                         loose = false;
                     } else if full > r.iterations {
-                        let r = relax(pf, &mut x, &mut tri, full - r.iterations, tol, Orientation::Kept);
-                        steps.0 += r.iterations;
-                        steps.1 += r.flips;
+                        let r = relax(pf, &mut x, &mut tri, full - r.iterations, tol, Orientation::Kept).tally(steps);
                         converged = r.converged;
                         loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
                     }
