@@ -140,7 +140,7 @@ pub fn default_accuracy() -> f64 {
     crate::arclen::DEFAULT_ACCURACY
 }
 
-/// `simulate(pieces, options)` → `{ vertices, triangles, piece, seam, stats }` (see `crate::simulate`).
+/// `simulate(pieces, options)` → `{ vertices, triangles, piece, seam, flat, stats }` (see `crate::simulate`).
 #[wasm_bindgen]
 pub fn simulate(pieces: JsValue, options: JsValue) -> Result<JsValue, JsError> {
     let pieces: Vec<api::path::PathDto> = from_js(pieces, "pieces")?;

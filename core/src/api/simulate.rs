@@ -63,13 +63,16 @@ impl From<&Stats> for StatsDto {
     }
 }
 
-/// `{ vertices, triangles, piece, seam, stats }`
+/// `{ vertices, triangles, piece, seam, flat, stats }`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SimulateDto {
     pub vertices: Vec<[f64; 3]>,
     pub triangles: Vec<[usize; 3]>,
     pub piece: Vec<u8>,
     pub seam: Vec<usize>,
+    /// `flat[t]`: triangle `t`'s corners on its own flat piece, input coordinates, the corner
+    /// order of `triangles[t]` (see [`crate::simulate::Simulation::flat`]).
+    pub flat: Vec<[[f64; 2]; 3]>,
     pub stats: StatsDto,
 }
 
@@ -80,6 +83,7 @@ impl From<&Simulation> for SimulateDto {
             triangles: s.triangles.clone(),
             piece: s.piece.clone(),
             seam: s.seam.clone(),
+            flat: s.flat.clone(),
             stats: StatsDto::from(&s.stats),
         }
     }

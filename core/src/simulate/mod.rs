@@ -92,6 +92,11 @@ pub struct Simulation {
     pub piece: Vec<u8>,
     /// Seam vertex indices in order (A counter-clockwise from its start).
     pub seam: Vec<usize>,
+    /// For every triangle, its three corners' positions on its own flat piece, in the input's
+    /// coordinates and in the corner order of `triangles`: `|vertices[i] − vertices[j]|` against
+    /// `|flat[t][a] − flat[t][b]|` is the isometry check, and a point given by barycentric
+    /// coordinates in `flat[t]` maps to the same coordinates in the 3D triangle.
+    pub flat: Vec<[[f64; 2]; 3]>,
     pub stats: Stats,
 }
 

@@ -55,9 +55,18 @@ pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
 
     let mut triangles = Vec::with_capacity(2 * n);
     let mut piece = Vec::with_capacity(2 * n);
+    let mut flat = Vec::with_capacity(2 * n);
     for (p, t) in sol.tri.iter().enumerate() {
+        // The samples of B are mirrored (x → −x, see `seam`); mirroring back gives the input's
+        // coordinates, and the reversed corner order keeps each flat triangle beside its 3D one.
+        let at = |v: usize| {
+            let q = pieces.flat[p].pts[v];
+            if p == 0 { q } else { [-q[0], q[1]] }
+        };
         for &[a, b, c] in &t.tris {
-            triangles.push(if p == 0 { [a, b, c] } else { [a, c, b] });
+            let tri = if p == 0 { [a, b, c] } else { [a, c, b] };
+            triangles.push(tri);
+            flat.push(tri.map(at));
             piece.push(p as u8);
         }
     }
@@ -126,5 +135,5 @@ pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
         converged: sol.converged,
         ms: 0.0,
     };
-    Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), stats }
+    Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, stats }
 }
