@@ -1,5 +1,5 @@
 /*
- * D-former – Measure perimeters (Illustrator File > Scripts; ExtendScript, strict ES3).
+ * D-former - Measure perimeters (Illustrator File > Scripts; ExtendScript, strict ES3).
  * Shows the perimeter of every selected path in the document's ruler units, using Illustrator's
  * own PathItem.length, and how far apart they are. Groups are searched; a compound path with one
  * sub-path counts as that path; everything else is listed as skipped. Changes nothing.

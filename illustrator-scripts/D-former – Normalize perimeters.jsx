@@ -1,5 +1,5 @@
 /*
- * D-former – Normalize perimeters (Illustrator File > Scripts; ExtendScript, strict ES3).
+ * D-former - Normalize perimeters (Illustrator File > Scripts; ExtendScript, strict ES3).
  * Scales each selected closed path uniformly about a pivot so that all get the same perimeter:
  * the largest, the smallest, the mean, the first's, or an exact length in ruler units. Arc length
  * scales linearly under a uniform scale, so the factor for a path of length L is target / L

@@ -14,7 +14,11 @@ function dformer_isArray(v) {
   return Object.prototype.toString.call(v) === "[object Array]";
 }
 
-/** @param {string} s @returns {string} */
+/**
+ * JSON string literal in plain ASCII: everything outside printable ASCII is a \uXXXX escape, so the
+ * answer survives any text encoding between ExtendScript and the panel (BRIDGE.md, "Text encoding").
+ * @param {string} s @returns {string}
+ */
 function dformer_quote(s) {
   var out = "\"";
   for (var i = 0; i < s.length; i++) {
@@ -25,7 +29,7 @@ function dformer_quote(s) {
     else if (c === "\n") out += "\\n";
     else if (c === "\r") out += "\\r";
     else if (c === "\t") out += "\\t";
-    else if (code < 0x20 || code === 0x2028 || code === 0x2029) {
+    else if (code < 0x20 || code > 0x7e) {
       var hex = code.toString(16);
       while (hex.length < 4) hex = "0" + hex;
       out += "\\u" + hex;
@@ -246,13 +250,26 @@ function dformer_unitsOf(doc) {
   return { units: units, pointsPerUnit: perUnit[units], rulerUnits: name };
 }
 
+/**
+ * Document.scaleFactor: 1, or 10 in a Large Canvas document, whose scripting DOM reports and takes
+ * every length divided by it (creold/illustrator-scripts Rescale, StrokesWeightDown, NumeratesPoints
+ * read it the same way; the Scripting Reference does not list it). Feature-detected: 1 where the
+ * property is missing (Illustrator before Large Canvas) or not a positive number.
+ * @param {Document} doc @returns {number}
+ */
+function dformer_scaleOf(doc) {
+  var sf;
+  try { sf = /** @type {*} */ (doc).scaleFactor; } catch (e) { sf = undefined; }
+  return typeof sf === "number" && isFinite(sf) && sf > 0 ? sf : 1;
+}
+
 /** Display name of a page item for messages. @param {PageItem} it @returns {string} */
 function dformer_nameOf(it) {
   if (it.name) return it.name;
   return "<" + it.typename.replace(/Item$/, "") + ">";
 }
 
-/** @param {PathItem} p @returns {boolean} */
+/** @param {*} p @returns {boolean} */
 function dformer_hasUuid(p) {
   var doc = app.activeDocument;
   var u;
@@ -275,11 +292,17 @@ function dformer_indexIn(coll, child) {
 }
 
 /**
- * Handle for a path: "u:<uuid>" (Illustrator 24+) or "p:<position>#<point count>" (older).
+ * Handle for a path: "u:<uuid>" (Illustrator 24+), "c:<compound path uuid>/<sub-path index>#<point count>"
+ * for the sub-path of a compound path (whether getPageItemFromUuid finds a sub-path is not documented),
+ * or "p:<position>#<point count>" (older Illustrator, or a compound path without uuid).
  * @param {PathItem} p @returns {string}
  */
 function dformer_idOf(p) {
-  if (dformer_hasUuid(p)) return "u:" + p.uuid;
+  /** @type {*} */
+  var parent = p.parent;
+  if (parent && parent.typename === "CompoundPathItem") {
+    if (dformer_hasUuid(parent)) return "c:" + parent.uuid + "/" + dformer_indexIn(parent.pathItems, p) + "#" + p.pathPoints.length;
+  } else if (dformer_hasUuid(p)) return "u:" + p.uuid;
   var parts = [];
   /** @type {*} */
   var node = p;
@@ -305,6 +328,17 @@ function dformer_resolve(doc, id, where) {
   if (id.substring(0, 2) === "u:") {
     if (!dformer_canLookUpUuid(doc)) dformer_fail(stale);
     try { found = doc.getPageItemFromUuid ? doc.getPageItemFromUuid(id.substring(2)) : null; } catch (e) { found = null; }
+  } else if (id.substring(0, 2) === "c:") {
+    var slash = id.lastIndexOf("/"), mark = id.lastIndexOf("#");
+    if (!dformer_canLookUpUuid(doc) || slash < 0 || mark < slash) dformer_fail(stale);
+    try {
+      /** @type {*} */
+      var compound = doc.getPageItemFromUuid ? doc.getPageItemFromUuid(id.substring(2, slash)) : null;
+      found = compound && compound.typename === "CompoundPathItem" ? compound.pathItems[Number(id.substring(slash + 1, mark))] : null;
+      if (found && String(found.pathPoints.length) !== id.substring(mark + 1)) found = null;
+    } catch (e1) {
+      found = null;
+    }
   } else if (id.substring(0, 2) === "p:") {
     var hash = id.lastIndexOf("#");
     var parts = id.substring(2, hash < 0 ? id.length : hash).split("/");
@@ -362,14 +396,19 @@ var DFORMER_SKIP = {
   SymbolItem: "symbol instance: break the link to the symbol first",
   MeshItem: "gradient mesh: not a path",
   GraphItem: "graph: ungroup it first",
-  PluginItem: "plug-in art (blend, live effect, envelope…): expand it first (Object > Expand)",
+  PluginItem: "plug-in art (blend, live effect, envelope...): expand it first (Object > Expand)",
   NonNativeItem: "non-native art: not a path"
 };
 
+/** A D-form has two pieces: the poll and the selection read the geometry of at most this many paths. */
+var DFORMER_PIECES = 2;
+
 /**
- * Walk the selection into readable paths and skipped items (rules in BRIDGE.md).
+ * Walk the selection into readable paths and skipped items (rules in BRIDGE.md). Stops at the
+ * (DFORMER_PIECES + 1)th path (`more`): a Select All of hundreds of paths costs a few reads, not a
+ * walk of every item (ExtendScript runs on Illustrator's main thread).
  * @param {Document} doc
- * @returns {{paths: Array<{item: PathItem, id: string}>, skipped: Array<{name: string, reason: string}>}}
+ * @returns {{paths: Array<{item: PathItem, id: string}>, skipped: Array<{name: string, reason: string}>, more: boolean, selected: number}}
  */
 function dformer_collect(doc) {
   /** @type {Array<{item: PathItem, id: string}>} */
@@ -378,6 +417,7 @@ function dformer_collect(doc) {
   var skipped = [];
   /** @type {Object<string, boolean>} */
   var seen = {};
+  var more = false;
   /** @param {PathItem} p @param {string} label */
   function takePath(p, label) {
     if (p.clipping) { skipped.push({ name: label, reason: "clipping path: it masks its group; D-former leaves it alone" }); return; }
@@ -386,10 +426,12 @@ function dformer_collect(doc) {
     var id = dformer_idOf(p);
     if (seen[id]) return;
     seen[id] = true;
+    if (paths.length === DFORMER_PIECES) { more = true; return; }
     paths.push({ item: p, id: id });
   }
   /** @param {*} it */
   function visit(it) {
+    if (more) return;
     var t = it.typename;
     var label = dformer_nameOf(it);
     // Selecting a group selects everything in it, also what the student hid or locked there
@@ -399,7 +441,7 @@ function dformer_collect(doc) {
     if (t === "PathItem") takePath(it, label);
     else if (t === "GroupItem") {
       var g = /** @type {GroupItem} */ (it);
-      for (var j = 0; j < g.pageItems.length; j++) visit(g.pageItems[j]);
+      for (var j = 0; j < g.pageItems.length && !more; j++) visit(g.pageItems[j]);
     } else if (t === "CompoundPathItem") {
       var c = /** @type {CompoundPathItem} */ (it);
       if (c.pathItems.length === 1) takePath(c.pathItems[0], label);
@@ -411,31 +453,30 @@ function dformer_collect(doc) {
     }
   }
   var sel = doc.selection;
-  if (sel === null || sel === undefined) return { paths: paths, skipped: skipped };
+  if (sel === null || sel === undefined) return { paths: paths, skipped: skipped, more: false, selected: 0 };
   if (typeof sel.length !== "number" || sel.typename) {
     skipped.push({ name: "<Text selection>", reason: "text is being edited: press Esc and select the paths" });
-    return { paths: paths, skipped: skipped };
+    return { paths: paths, skipped: skipped, more: false, selected: 0 };
   }
-  for (var i = 0; i < sel.length; i++) visit(sel[i]);
-  return { paths: paths, skipped: skipped };
-}
-
-/** @param {*} v @returns {Array<number>} */
-function dformer_xy(v) {
-  return [Number(v[0]), Number(v[1])];
+  var n = sel.length;
+  for (var i = 0; i < n && !more; i++) visit(sel[i]);
+  if (more) { paths = []; skipped = []; }
+  return { paths: paths, skipped: skipped, more: more, selected: n };
 }
 
 /**
- * The core's path JSON for a PathItem, with its anchor selection.
- * @param {PathItem} p
+ * The core's path JSON for a PathItem, with its anchor selection; coordinates multiplied by `sf`
+ * (Document.scaleFactor: real points from a Large Canvas document's DOM values; 1 to copy them).
+ * @param {PathItem} p @param {number} sf
  */
-function dformer_readPath(p) {
+function dformer_readPath(p, sf) {
   var pts = [];
   var selectedAnchors = [];
   var n = p.pathPoints.length;
   for (var i = 0; i < n; i++) {
     var pp = p.pathPoints[i];
-    pts.push({ anchor: dformer_xy(pp.anchor), left: dformer_xy(pp.leftDirection), right: dformer_xy(pp.rightDirection) });
+    var a = pp.anchor, l = pp.leftDirection, r = pp.rightDirection;
+    pts.push({ anchor: [sf * a[0], sf * a[1]], left: [sf * l[0], sf * l[1]], right: [sf * r[0], sf * r[1]] });
     if (pp.selected == PathPointSelection.ANCHORPOINT) selectedAnchors.push(i);
   }
   return { path: { closed: p.closed, points: pts }, selectedAnchors: selectedAnchors, allSelected: n > 0 && selectedAnchors.length === n };
@@ -457,23 +498,27 @@ function dformer_units() {
   return dformer_run(function () {
     var doc = dformer_doc();
     var u = dformer_unitsOf(doc);
-    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, rulerUnits: u.rulerUnits, colorMode: dformer_isCmyk(doc) ? "CMYK" : "RGB" };
+    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, rulerUnits: u.rulerUnits, colorMode: dformer_isCmyk(doc) ? "CMYK" : "RGB",
+      scaleFactor: dformer_scaleOf(doc) };
   });
 }
 
 /** @returns {string} */
 function dformer_selectionKey() {
   return dformer_run(function () {
-    if (app.documents.length === 0) return { key: "" };
+    if (app.documents.length === 0) return { key: "", hasDocument: false };
     var doc = app.activeDocument;
     var c = dformer_collect(doc);
     // Colour mode too: switching it (File > Document Color Mode) changes what the panel tells the student.
-    var parts = [doc.name, String(doc.rulerUnits), dformer_isCmyk(doc) ? "CMYK" : "RGB", String(c.skipped.length)];
+    var parts = [doc.name, String(doc.rulerUnits), dformer_isCmyk(doc) ? "CMYK" : "RGB", String(dformer_scaleOf(doc)), String(c.skipped.length)];
+    // More than two paths: the panel shows "select two paths" and needs no geometry, so the key is
+    // the number of selected objects only (bounded however much is selected).
+    if (c.more) return { key: parts.join(";") + ";more:" + c.selected, hasDocument: true };
     for (var i = 0; i < c.paths.length; i++) {
       var p = c.paths[i].item;
       var sel = [];
       // Every anchor and handle goes into two weighted sums: moving a point inside the bounds
-      // (a notch, a handle) or re-ordering the points (rotating a square by 90°) leaves
+      // (a notch, a handle) or re-ordering the points (rotating a square by 90 degrees) leaves
       // geometricBounds alone but must still make the panel read the path again.
       var h1 = 0, h2 = 0;
       var n = p.pathPoints.length;
@@ -487,7 +532,7 @@ function dformer_selectionKey() {
       parts.push(c.paths[i].id + "|" + n + "|" + p.closed + "|" + p.geometricBounds.join(",") + "|" +
         dformer_number(h1) + "," + dformer_number(h2) + "|" + sel.join(","));
     }
-    return { key: parts.join(";") };
+    return { key: parts.join(";"), hasDocument: true };
   });
 }
 
@@ -497,16 +542,18 @@ function dformer_selection() {
     var doc = dformer_doc();
     var u = dformer_unitsOf(doc);
     var c = dformer_collect(doc);
+    var sf = dformer_scaleOf(doc);
     var items = [];
     for (var i = 0; i < c.paths.length; i++) {
       var p = c.paths[i].item;
-      var r = dformer_readPath(p);
+      var r = dformer_readPath(p, sf);
       items.push({
         id: c.paths[i].id, name: dformer_nameOf(p), layer: p.layer ? p.layer.name : "",
-        path: r.path, selectedAnchors: r.selectedAnchors, allSelected: r.allSelected, length: p.length
+        path: r.path, selectedAnchors: r.selectedAnchors, allSelected: r.allSelected, length: sf * p.length
       });
     }
-    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, colorMode: dformer_isCmyk(doc) ? "CMYK" : "RGB", items: items, skipped: c.skipped };
+    return { document: doc.name, units: u.units, pointsPerUnit: u.pointsPerUnit, colorMode: dformer_isCmyk(doc) ? "CMYK" : "RGB",
+      scaleFactor: sf, items: items, more: c.more, selected: c.selected, skipped: c.skipped };
   });
 }
 
@@ -551,12 +598,13 @@ function dformer_pair(v, where) {
 }
 
 /**
- * Check a core path and return it normalised ({closed, points:[{anchor,left,right}]}).
- * @param {*} path @param {string} where
+ * Check a core path and return it normalised ({closed, points:[{anchor,left,right}]}), in DOM units:
+ * the panel's real points divided by `sf` (Document.scaleFactor).
+ * @param {*} path @param {string} where @param {number} sf
  * @returns {{closed: boolean, points: Array<{anchor: Array<number>, left: Array<number>, right: Array<number>}>}}
  */
-function dformer_checkPath(path, where) {
-  if (!path || typeof path !== "object" || !dformer_isArray(path.points)) dformer_fail(where + ": expected a path {closed, points:[…]}.");
+function dformer_checkPath(path, where, sf) {
+  if (!path || typeof path !== "object" || !dformer_isArray(path.points)) dformer_fail(where + ": expected a path {closed, points:[...]}.");
   if (path.points.length < 2) dformer_fail(where + ": a path needs at least 2 points, got " + path.points.length + ".");
   var out = [];
   for (var i = 0; i < path.points.length; i++) {
@@ -566,7 +614,7 @@ function dformer_checkPath(path, where) {
     var a = dformer_pair(q.anchor, w + " anchor");
     var l = q.left === undefined || q.left === null ? a : dformer_pair(q.left, w + " left");
     var r = q.right === undefined || q.right === null ? a : dformer_pair(q.right, w + " right");
-    out.push({ anchor: a, left: l, right: r });
+    out.push({ anchor: [a[0] / sf, a[1] / sf], left: [l[0] / sf, l[1] / sf], right: [r[0] / sf, r[1] / sf] });
   }
   return { closed: path.closed !== false, points: out };
 }
@@ -590,6 +638,8 @@ function dformer_plan(doc, req) {
   if (req.document !== undefined && req.document !== null && req.document !== doc.name) {
     dformer_fail("The active document is \"" + doc.name + "\", not \"" + req.document + "\" where the paths were read; switch back or select the paths again.");
   }
+  // Lengths in the request are real points; a Large Canvas document's DOM takes them divided by sf.
+  var sf = dformer_scaleOf(doc);
   var labelSize = req.labelSize === undefined || req.labelSize === null ? 6 : dformer_finite(req.labelSize, "labelSize");
   if (labelSize < DFORMER_TYPE_SIZE[0] || labelSize > DFORMER_TYPE_SIZE[1]) {
     dformer_fail("labelSize must be from " + DFORMER_TYPE_SIZE[0] + " to " + DFORMER_TYPE_SIZE[1] + " pt (Illustrator's type sizes), got " + labelSize + ".");
@@ -609,7 +659,7 @@ function dformer_plan(doc, req) {
     var color = dformer_checkColor(given.color === undefined || given.color === null ? d.color : given.color, "layers." + role + ".color");
     var width = given.width === undefined || given.width === null ? d.width : dformer_finite(given.width, "layers." + role + ".width");
     if (width <= 0) dformer_fail("layers." + role + ".width: stroke width must be greater than 0, got " + width + ".");
-    layers[role] = { name: name, color: color, width: width, layer: null, needed: false };
+    layers[role] = { name: name, color: color, width: width / sf, layer: null, needed: false };
   }
 
   // In-place updates.
@@ -628,7 +678,7 @@ function dformer_plan(doc, req) {
     seenIds[up.id] = true;
     var why = dformer_blocked(item);
     if (why) dformer_fail(where + ": cannot change the path because " + why + ".");
-    var path = dformer_checkPath(up.path, where);
+    var path = dformer_checkPath(up.path, where, sf);
     var n = item.pathPoints.length;
     if (path.points.length !== n) {
       dformer_fail(where + ": the path has " + n + " anchors in Illustrator but the new path has " + path.points.length +
@@ -654,7 +704,7 @@ function dformer_plan(doc, req) {
     seenNames[pname] = true;
     pw = pw + " (\"" + pname + "\")";
     var piece = { name: pname, outline: /** @type {*} */ (null), holes: /** @type {Array<*>} */ ([]), marks: /** @type {Array<*>} */ ([]), labels: /** @type {Array<*>} */ ([]) };
-    if (pc.outline !== undefined && pc.outline !== null) piece.outline = dformer_checkPath(pc.outline, pw + " outline");
+    if (pc.outline !== undefined && pc.outline !== null) piece.outline = dformer_checkPath(pc.outline, pw + " outline", sf);
     var lists = ["holes", "marks", "labels"];
     for (var li = 0; li < lists.length; li++) {
       var lv = pc[lists[li]];
@@ -664,10 +714,10 @@ function dformer_plan(doc, req) {
     var holes = pc.holes || [];
     for (var h = 0; h < holes.length; h++) {
       var hp = holes[h] && holes[h].path && !holes[h].points ? holes[h].path : holes[h];
-      piece.holes.push(dformer_checkPath(hp, pw + " holes[" + h + "]"));
+      piece.holes.push(dformer_checkPath(hp, pw + " holes[" + h + "]", sf));
     }
     var marks = pc.marks || [];
-    for (var m = 0; m < marks.length; m++) piece.marks.push(dformer_checkPath(marks[m], pw + " marks[" + m + "]"));
+    for (var m = 0; m < marks.length; m++) piece.marks.push(dformer_checkPath(marks[m], pw + " marks[" + m + "]", sf));
     var labels = pc.labels || [];
     for (var b = 0; b < labels.length; b++) {
       var lb = labels[b];
@@ -678,9 +728,10 @@ function dformer_plan(doc, req) {
       if (size < DFORMER_TYPE_SIZE[0] || size > DFORMER_TYPE_SIZE[1]) {
         dformer_fail(lw + ": size must be from " + DFORMER_TYPE_SIZE[0] + " to " + DFORMER_TYPE_SIZE[1] + " pt (Illustrator's type sizes), got " + size + ".");
       }
+      var at = dformer_pair(lb.at, lw + " at");
       piece.labels.push({
-        text: String(lb.text), at: dformer_pair(lb.at, lw + " at"),
-        angle: lb.angle === undefined || lb.angle === null ? 0 : dformer_finite(lb.angle, lw + " angle"), size: size
+        text: String(lb.text), at: [at[0] / sf, at[1] / sf],
+        angle: lb.angle === undefined || lb.angle === null ? 0 : dformer_finite(lb.angle, lw + " angle"), size: size / sf
       });
     }
     if (piece.outline || piece.holes.length) layers.cut.needed = true;
@@ -757,7 +808,8 @@ function dformer_rgb(c) {
 }
 
 /**
- * SMOOTH when both handles lie on one line through the anchor on opposite sides, else CORNER.
+ * SMOOTH when both handles lie on one line through the anchor on opposite sides, else CORNER. Only
+ * for NEW art (the core's doubles); an in-place update keeps each point's type (dformer_setPoints).
  * @param {{anchor: Array<number>, left: Array<number>, right: Array<number>}} q @returns {PointType}
  */
 function dformer_pointType(q) {
@@ -770,17 +822,21 @@ function dformer_pointType(q) {
 }
 
 /**
- * Set every PathPoint of p from a checked path (same count).
+ * Set every PathPoint of p from a checked path (same count). `types`: the point types to keep (an
+ * in-place update: a uniform scale or a move preserves tangency, while re-deriving the type from
+ * coordinates Illustrator stored as 32-bit floats turned smooth points into corners); null derives
+ * them (new art).
  * @param {PathItem} p @param {{points: Array<{anchor: Array<number>, left: Array<number>, right: Array<number>}>}} path
+ * @param {Array<PointType>|null} types
  */
-function dformer_setPoints(p, path) {
+function dformer_setPoints(p, path, types) {
   for (var i = 0; i < path.points.length; i++) {
     var q = path.points[i];
     var pp = p.pathPoints[i];
     pp.anchor = [q.anchor[0], q.anchor[1]];
     pp.leftDirection = [q.left[0], q.left[1]];
     pp.rightDirection = [q.right[0], q.right[1]];
-    pp.pointType = dformer_pointType(q);
+    pp.pointType = types ? types[i] : dformer_pointType(q);
   }
 }
 
@@ -793,9 +849,10 @@ function dformer_draw(group, path, name, style) {
   var anchors = [];
   for (var i = 0; i < path.points.length; i++) anchors.push([path.points[i].anchor[0], path.points[i].anchor[1]]);
   p.setEntirePath(/** @type {*} */ (anchors));
-  dformer_setPoints(p, path);
+  dformer_setPoints(p, path, null);
   p.closed = path.closed;
   p.name = name;
+  dformer_plainStroke(group, p);
   p.filled = false;
   p.stroked = true;
   p.strokeColor = dformer_rgb(style.color);
@@ -804,21 +861,70 @@ function dformer_draw(group, path, name, style) {
 }
 
 /**
- * Point-text label, centre-justified, rotated by angle (degrees CCW), its visual centre at `at`
- * (baseline centre moved 0.35·size down along the rotated up-vector: half a cap height).
+ * New art takes the document's current style (what the student last drew with: dashes, round caps,
+ * 50 % opacity, Multiply, a brush). Laser software needs a plain hairline, so reset all of it: the
+ * [Default] graphic style first (the only DOM route that removes a brush, as Illustrator's
+ * Graphic Styles panel does), then every stroke and transparency attribute explicitly, in case the
+ * student edited [Default]. Best effort for the graphic style; the explicit attributes must stick.
+ * @param {GroupItem} group @param {PathItem} p
+ */
+function dformer_plainStroke(group, p) {
+  try {
+    /** @type {*} */
+    var styles = dformer_docOf(group).graphicStyles;
+    if (styles && styles.length > 0) styles[0].applyTo(p);
+  } catch (e) { /* no [Default] style: the attributes below still make a plain stroke */ }
+  p.strokeDashes = [];
+  p.strokeDashOffset = 0;
+  p.strokeCap = StrokeCap.BUTTENDCAP;
+  p.strokeJoin = StrokeJoin.MITERENDJOIN;
+  p.strokeMiterLimit = 10;
+  p.strokeOverprint = false;
+  p.fillOverprint = false;
+  p.opacity = 100;
+  p.blendingMode = BlendModes.NORMAL;
+}
+
+/** The Document an item belongs to. @param {*} it @returns {Document} */
+function dformer_docOf(it) {
+  /** @type {*} */
+  var node = it;
+  while (node && node.typename !== "Document") node = node.parent;
+  return node || app.activeDocument;
+}
+
+/** @param {TextFrame} tf @returns {Array<number>} centre of its geometricBounds */
+function dformer_boundsCentre(tf) {
+  var b = tf.geometricBounds;
+  return [(b[0] + b[2]) / 2, (b[1] + b[3]) / 2];
+}
+
+/**
+ * Point-text label, centre-justified, rotated by angle (degrees CCW), its visual centre at `at`.
+ * The documented, widely used route (TextFrameItems.pointText, rotate, translate; no script writes
+ * TextFrameItem.anchor after rotate(), and Illustrator need not honour it): create the text at `at`,
+ * rotate it about its centre, then move the centre of its bounds (the centre of the rotated glyph
+ * box) onto `at`, and read the bounds back to check it landed there.
  * @param {GroupItem} group @param {*} label @param {string} name @param {*} style @returns {TextFrame}
  */
 function dformer_label(group, label, name, style) {
-  var tf = group.textFrames.add();
+  var tf = group.textFrames.pointText([label.at[0], label.at[1]]);
   tf.contents = label.text;
   tf.name = name;
   tf.textRange.characterAttributes.size = label.size;
   tf.textRange.characterAttributes.fillColor = dformer_rgb(style.color);
   tf.textRange.characterAttributes.strokeColor = new NoColor();
   tf.textRange.paragraphAttributes.justification = Justification.CENTER;
+  tf.opacity = 100;
+  tf.blendingMode = BlendModes.NORMAL;
   if (label.angle !== 0) tf.rotate(label.angle);
-  var a = label.angle * Math.PI / 180, h = 0.35 * label.size;
-  tf.anchor = [label.at[0] + h * Math.sin(a), label.at[1] - h * Math.cos(a)];
+  var c = dformer_boundsCentre(tf);
+  tf.translate(label.at[0] - c[0], label.at[1] - c[1]);
+  c = dformer_boundsCentre(tf);
+  var off = Math.sqrt((c[0] - label.at[0]) * (c[0] - label.at[0]) + (c[1] - label.at[1]) * (c[1] - label.at[1]));
+  if (!(off <= 0.01 * label.size + 1e-6)) {
+    throw new Error("label \"" + label.text + "\" did not land where it was placed (" + off + " pt away)");
+  }
   return tf;
 }
 
@@ -839,8 +945,9 @@ function dformer_write(doc, plan) {
   try {
     for (var u = 0; u < plan.updates.length; u++) {
       var item = plan.updates[u].item;
-      journal.saved.push({ item: item, path: dformer_readPath(item).path, types: dformer_types(item) });
-      dformer_setPoints(item, plan.updates[u].path);
+      var types = dformer_types(item);
+      journal.saved.push({ item: item, path: dformer_readPath(item, 1).path, types: types });
+      dformer_setPoints(item, plan.updates[u].path, types);
     }
     var roles = ["cut", "score", "engrave"];
     for (var r = 0; r < roles.length; r++) {
@@ -923,8 +1030,7 @@ function dformer_undo(journal) {
   for (i = journal.saved.length - 1; i >= 0; i--) {
     try {
       var s = journal.saved[i];
-      dformer_setPoints(s.item, s.path);
-      for (var j = 0; j < s.types.length; j++) s.item.pathPoints[j].pointType = s.types[j];
+      dformer_setPoints(s.item, s.path, s.types);
     } catch (e3) { ok = false; }
   }
   return ok;

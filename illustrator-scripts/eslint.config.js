@@ -11,7 +11,7 @@ export default [
         app: 'readonly', alert: 'readonly', confirm: 'readonly', prompt: 'readonly', $: 'readonly', Window: 'readonly',
         RGBColor: 'readonly', NoColor: 'readonly', PointType: 'readonly', PathPointSelection: 'readonly',
         Transformation: 'readonly', RulerUnits: 'readonly', Justification: 'readonly',
-        CoordinateSystem: 'readonly', DocumentColorSpace: 'readonly',
+        CoordinateSystem: 'readonly', DocumentColorSpace: 'readonly', StrokeCap: 'readonly', StrokeJoin: 'readonly', BlendModes: 'readonly',
         Object: 'readonly', Array: 'readonly', String: 'readonly', Number: 'readonly', Math: 'readonly', isFinite: 'readonly',
         parseInt: 'readonly', Infinity: 'readonly', NaN: 'readonly', undefined: 'readonly',
       },

@@ -7,7 +7,7 @@ import path from 'node:path';
 import vm from 'node:vm';
 import { fileURLToPath } from 'node:url';
 import * as E from './sim/enums.mjs';
-import { Application, Artboard, CompoundPathItem, GroupItem, NoColor, OtherItem, PathItem, RGBColor, Sim, TextFrame, ellipsePoints } from './sim/dom.mjs';
+import { Application, Artboard, CompoundPathItem, GroupItem, NoColor, OtherItem, PathItem, RGBColor, Sim, TextFrame, ellipsePoints, roundedRectPoints } from './sim/dom.mjs';
 import { makeWindowClass } from './sim/scriptui.mjs';
 
 export const SCRIPTS_DIR = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../illustrator-scripts');
@@ -36,17 +36,23 @@ function addShape(sim, doc, s) {
   } else {
     const p = new PathItem(sim);
     let pts, closed = true;
-    if (s.path) { pts = s.path.points.map((q) => ({ anchor: q.anchor, left: q.left || q.anchor, right: q.right || q.anchor })); closed = s.path.closed !== false; }
+    if (s.path) {
+      pts = s.path.points.map((q) => ({ anchor: q.anchor, left: q.left || q.anchor, right: q.right || q.anchor, type: q.type && E.PointType[q.type] }));
+      closed = s.path.closed !== false;
+    }
+    else if (s.roundedRect) { const r = s.roundedRect; pts = roundedRectPoints(r.top, r.left, r.width, r.height, r.radius); p._live = { radius: r.radius }; }
     else if (s.ellipse) pts = ellipsePoints(s.ellipse.top, s.ellipse.left, s.ellipse.width, s.ellipse.height, !!s.ellipse.reversed);
     else if (s.rect) { const { top: t, left: l, width: w, height: h } = s.rect; pts = [[l, t], [l, t - h], [l + w, t - h], [l + w, t]].map(corner); }
     else if (s.polygon) { pts = s.polygon.map(corner); closed = s.closed !== false; }
     else throw new Error(`shape ${s.name}: give path, ellipse, rect or polygon`);
     p._setPoints(pts);
     p.closed = closed;
+    if (s.strokeWidth !== undefined) p.strokeWidth = s.strokeWidth;
     p.clipping = !!s.clipping;
     p.guides = !!s.guides;
     if (s.kind === 'compound') {
       item = new CompoundPathItem(sim);
+      p.name = s.subName || '';
       p._parent = item;
       item._items.push(p);
       for (const extra of s.more || []) {
@@ -59,6 +65,7 @@ function addShape(sim, doc, s) {
     } else item = p;
   }
   item.name = s.name || '';
+  if (s.kind === 'compound') item._items[0].name = s.subName || '';
   item._parent = container;
   container._items.unshift(item);
   // Selection tool semantics: selecting a grouped shape selects its group; `directSelect` selects
@@ -87,10 +94,22 @@ function addShape(sim, doc, s) {
  * @param {number[][]} [o.artboards] artboard rects [left, top, right, bottom] in document coordinates
  * @param {number} [o.activeArtboard=0] index of the active artboard
  * @param {'document'|'artboard'} [o.coordinateSystem='document'] app.coordinateSystem when the scripts start
+ * @param {number|null} [o.scaleFactor=1] Document.scaleFactor (10: Large Canvas; null: no such property)
+ * @param {object} [o.style] the current style new art is drawn with (strokeDashes, opacity, blendingMode: 'MULTIPLY', brush…)
+ * @param {'works'|'throws'|'ignored'} [o.labelAnchor='works'] what assigning TextFrame.anchor does
+ * @param {'throws'|'works'} [o.compoundUuid='throws'] getPageItemFromUuid on the sub-path of a compound path
+ * @param {boolean} [o.preferencesLocked] app.preferences setters have no effect
+ * @param {'utf8'|'legacy'} [o.transport='utf8'] 'legacy': non-ASCII text crossing evalScript is mangled
+ *   (script bytes read as Latin-1, answer characters above U+007F sent as Latin-1 bytes and read as UTF-8)
  */
 export function createHost(o = {}) {
+  const style = o.style ? { ...o.style } : null;
+  for (const [k, enumeration] of [['blendingMode', E.BlendModes], ['strokeCap', E.StrokeCap], ['strokeJoin', E.StrokeJoin]]) {
+    if (style && typeof style[k] === 'string') style[k] = enumeration[style[k]];
+  }
   const sim = new Sim({ uuid: o.uuid !== false, units: o.noDocument ? null : (o.units || 'mm'), float32: !!o.float32,
-    name: o.document || 'Untitled-1.ai', colorSpace: o.colorSpace || 'RGB' });
+    name: o.document || 'Untitled-1.ai', colorSpace: o.colorSpace || 'RGB', scaleFactor: o.scaleFactor === undefined ? 1 : o.scaleFactor,
+    style, labelAnchor: o.labelAnchor, compoundUuid: o.compoundUuid, preferencesLocked: !!o.preferencesLocked });
   const doc = sim.documents[0] || null;
   if (doc && o.artboards) {
     doc._artboards = o.artboards.map((r, i) => Object.assign(new Artboard(sim, r, `Artboard ${i + 1}`), { _parent: doc }));
@@ -102,14 +121,16 @@ export function createHost(o = {}) {
   const alerts = [];
   const dialogs = [];
   const app = new Application(sim);
-  const host = { sim, app, doc, alerts, dialogs, respond: o.dialog || null };
+  const host = { sim, app, doc, alerts, dialogs, respond: o.dialog || null, evalFiles: [] };
   const globals = {
     app, RGBColor, NoColor,
     PointType: E.PointType, PathPointSelection: E.PathPointSelection, Transformation: E.Transformation,
     RulerUnits: E.RulerUnits, Justification: E.Justification,
     CoordinateSystem: E.CoordinateSystem, DocumentColorSpace: E.DocumentColorSpace,
+    StrokeCap: E.StrokeCap, StrokeJoin: E.StrokeJoin, BlendModes: E.BlendModes,
     alert: (m) => { alerts.push(String(m)); },
-    $: { writeln: () => {} },
+    // $.evalFile(path): ExtendScript runs the file in the same engine (CEP 12 Cookbook, "Load Multiple JSX files").
+    $: { writeln: () => {}, evalFile: (file) => { host.evalFiles.push(String(file)); host.load(String(file)); } },
     Window: makeWindowClass((w) => (host.respond ? host.respond(w) : 2), dialogs),
   };
   const context = vm.createContext(globals);
@@ -120,14 +141,21 @@ export function createHost(o = {}) {
   };
   host.load(BRIDGE);
   for (const f of o.scripts || []) host.load(f);
+  const legacy = o.transport === 'legacy';
   /** CSInterface.evalScript stand-in: the value as a string, "EvalScript error." on a throw. */
   host.evalScript = (src) => {
     try {
-      const r = vm.runInContext(String(src), context);
-      return r === undefined ? '' : String(r);
+      const script = legacy ? Buffer.from(String(src), 'utf8').toString('latin1') : String(src);
+      const r = vm.runInContext(script, context);
+      const text = r === undefined ? '' : String(r);
+      return legacy ? new TextDecoder('utf-8').decode(Buffer.from(text.replace(/[^\u0000-\u00ff]/g, '?'), 'latin1')) : text;
     } catch {
       return 'EvalScript error.';
     }
+  };
+  /** The ExtendScript engine forgets the bridge (CEP-Resources issue 39: ScriptPath is loaded only at panel start-up). */
+  host.loseBridge = () => {
+    for (const k of Object.keys(context)) if (/^(dformer_|DFORMER_)/.test(k)) delete context[k];
   };
   /** Run a standalone File > Scripts script; `respond` answers its dialog. Returns the new alerts. */
   host.runScript = (file, respond) => {
@@ -155,6 +183,8 @@ function item(it) {
   if (it instanceof PathItem) {
     return {
       ...base, closed: it.closed, filled: it.filled, stroked: it.stroked, strokeWidth: it.strokeWidth,
+      style: Object.fromEntries(Object.keys(it).filter((k) => /^(stroke(Dashes|DashOffset|Cap|Join|MiterLimit|Overprint)|fillOverprint|opacity|blendingMode|brush)$/.test(k))
+        .map((k) => [k, Array.isArray(it[k]) ? [...it[k]] : it[k] === null || typeof it[k] !== 'object' ? it[k] : String(it[k])])),
       strokeColor: color(it.strokeColor), fillColor: color(it.fillColor), clipping: it.clipping, guides: it.guides,
       points: it._points.map((p) => ({ a: p._a, l: p._l, r: p._r, type: String(p._type), sel: String(p._sel) })),
     };
@@ -162,6 +192,7 @@ function item(it) {
   if (it instanceof TextFrame) {
     const ca = it.textRange.characterAttributes;
     return { ...base, contents: it.contents, anchor: it._anchor, rotation: it.rotation, size: ca.size, fill: color(ca.fillColor),
+      opacity: it.opacity, blendingMode: String(it.blendingMode),
       justification: String(it.textRange.paragraphAttributes.justification) };
   }
   if (it._items) return { ...base, clipped: it.clipped, items: it._items.map(item) };

@@ -22,9 +22,24 @@
 //   as its default [0,0]). Simulator choice: the y axis stays up in both systems (geometricBounds top >
 //   bottom), as scripts observe; only the origin moves. Lengths and other relative values do not change;
 //   - Document.documentColorSpace is read-only (RGB unless the host says CMYK); colours are stored as
-//   assigned (Illustrator's translation of RGB colours in a CMYK document is not simulated).
+//   assigned (Illustrator's translation of RGB colours in a CMYK document is not simulated);
+// - behaviour real Illustrator has and the Scripting Reference does not spell out (issue 11; sources in
+//   illustrator-scripts/BRIDGE.md, "What the simulated DOM models"):
+//   - every PathPoint / geometricBounds read is counted in sim.reads (ExtendScript runs on Illustrator's
+//     main thread: what the panel's poll reads, the student waits for);
+//   - new paths and text frames take the document's current style (sim.style: dashes, caps, joins,
+//     opacity, blend mode, brush), as art drawn with the tools does; graphicStyles[0] ("[Default]")
+//     .applyTo() resets it;
+//   - Document.scaleFactor (1, or 10 in a Large Canvas document): the DOM reports and takes lengths
+//     divided by it; `real*` helpers give the printed size;
+//   - TextFrame: textFrames.pointText([x, y]) creates point text at its baseline anchor; the bounds are
+//     the rotated glyph box; the `anchor` setter can be made to throw or be ignored (labelAnchor);
+//   - app.preferences get/set(Integer|Boolean)Preference; Live Shape rounded rectangles keep their
+//     corner radius under resize() unless policyForPreservingCorners is 1 ("Scale Corners");
+//   - getPageItemFromUuid does not find the sub-path of a compound path (undocumented: modelled as the
+//     failing case, compoundUuid: 'throws').
 import { cubicBounds, cubicLength, segmentsOf } from './bezier.mjs';
-import { CoordinateSystem, DocumentColorSpace, PathPointSelection, PointType, RulerUnits, Transformation, Justification, UNIT_MEMBERS } from './enums.mjs';
+import { BlendModes, CoordinateSystem, DocumentColorSpace, PathPointSelection, PointType, RulerUnits, StrokeCap, StrokeJoin, Transformation, Justification, UNIT_MEMBERS } from './enums.mjs';
 
 const NO_SUCH = () => new Error('No such element');
 const LOCKED = () => new Error('Target layer cannot be modified');
@@ -64,10 +79,27 @@ function isPair(v) {
     typeof v[0] === 'number' && typeof v[1] === 'number';
 }
 
+/** The style a new path gets from Illustrator's [Default] graphic style. */
+export function defaultStyle() {
+  return {
+    strokeDashes: [], strokeDashOffset: 0, strokeCap: StrokeCap.BUTTENDCAP, strokeJoin: StrokeJoin.MITERENDJOIN,
+    strokeMiterLimit: 10, opacity: 100, blendingMode: BlendModes.NORMAL, strokeOverprint: false, fillOverprint: false, brush: null,
+  };
+}
+const STYLE_KEYS = Object.keys(defaultStyle());
+
 export class Sim {
-  constructor({ uuid = true, units = 'mm', float32 = false, name = 'Untitled-1.ai', colorSpace = 'RGB' } = {}) {
+  constructor({ uuid = true, units = 'mm', float32 = false, name = 'Untitled-1.ai', colorSpace = 'RGB', scaleFactor = 1,
+    style = null, labelAnchor = 'works', compoundUuid = 'throws', preferencesLocked = false } = {}) {
     this.hasUuid = uuid;
     this.float32 = float32;
+    this.scaleFactor = scaleFactor;   // Document.scaleFactor; null = property absent (Illustrator before Large Canvas)
+    this.style = { ...defaultStyle(), ...(style || {}) };   // the "current style" new art is drawn with
+    this.labelAnchor = labelAnchor;   // 'works' | 'throws' | 'ignored': what TextFrame.anchor = … does
+    this.compoundUuid = compoundUuid; // 'throws' | 'works': getPageItemFromUuid on a compound's sub-path
+    this.preferencesLocked = preferencesLocked; // true: app.preferences setters have no effect
+    this.preferences = { integer: { policyForPreservingCorners: 2 }, boolean: { scaleLineWeight: false } };
+    this.reads = 0;                   // PathPoint and bounds reads (the poll's cost on Illustrator's main thread)
     this.nextUuid = 1;
     this.faults = {};              // name → remaining count before a thrown fault (tests)
     this.calls = {};
@@ -119,6 +151,10 @@ class Node {
 /** Container behaviour shared by Layer, GroupItem, Document (via its active layer). */
 function containerCollections(owner, itemsHost) {
   const of = (T) => () => itemsHost()._items.filter((x) => x instanceof T);
+  // New art takes the current style, like a shape drawn with a tool after the student used a dashed,
+  // half-transparent brush stroke.
+  const styled = (item) => { Object.assign(item, owner.sim.style, { strokeDashes: owner.sim.style.strokeDashes.slice() }); return item; };
+  const newText = () => { const t = new TextFrame(owner.sim); t.opacity = owner.sim.style.opacity; t.blendingMode = owner.sim.style.blendingMode; return t; };
   const addTo = (make, what) => () => {
     const host = itemsHost();
     owner.sim.hit(what);
@@ -131,16 +167,16 @@ function containerCollections(owner, itemsHost) {
   return {
     pageItems: () => collection('PageItems', () => itemsHost()._items.slice()),
     pathItems: () => collection('PathItems', of(PathItem), {
-      add: addTo(() => new PathItem(owner.sim), 'pathItems.add'),
+      add: addTo(() => styled(new PathItem(owner.sim)), 'pathItems.add'),
       ellipse: (top = 100, left = 100, width = 50, height = 100, reversed = false) => {
-        const p = addTo(() => new PathItem(owner.sim), 'pathItems.ellipse')();
+        const p = addTo(() => styled(new PathItem(owner.sim)), 'pathItems.ellipse')();
         [left, top] = owner.sim.in(owner.document, [left, top], 'ellipse');
         p._setPoints(ellipsePoints(top, left, width, height, reversed));
         p.closed = true;
         return p;
       },
       rectangle: (top, left, width, height, reversed = false) => {
-        const p = addTo(() => new PathItem(owner.sim), 'pathItems.rectangle')();
+        const p = addTo(() => styled(new PathItem(owner.sim)), 'pathItems.rectangle')();
         [left, top] = owner.sim.in(owner.document, [left, top], 'rectangle');
         const pts = [[left, top], [left, top - height], [left + width, top - height], [left + width, top]];
         if (reversed) pts.reverse();
@@ -150,7 +186,15 @@ function containerCollections(owner, itemsHost) {
       },
     }),
     groupItems: () => collection('GroupItems', of(GroupItem), { add: addTo(() => new GroupItem(owner.sim), 'groupItems.add') }),
-    textFrames: () => collection('TextFrameItems', of(TextFrame), { add: addTo(() => new TextFrame(owner.sim), 'textFrames.add') }),
+    textFrames: () => collection('TextFrameItems', of(TextFrame), {
+      add: addTo(newText, 'textFrames.add'),
+      /** TextFrameItems.pointText(anchor): point text whose baseline starts at `anchor` (current coordinate system). */
+      pointText: (anchor) => {
+        const t = addTo(newText, 'textFrames.pointText')();
+        t._anchor = owner.sim.in(owner.document, anchor, 'pointText');
+        return t;
+      },
+    }),
     compoundPathItems: () => collection('CompoundPathItems', of(CompoundPathItem), {
       add: addTo(() => new CompoundPathItem(owner.sim), 'compoundPathItems.add'),
     }),
@@ -172,7 +216,25 @@ export function ellipsePoints(top, left, width, height, reversed) {
     { anchor: [cx, cy + ry], left: [cx + k * rx, cy + ry], right: [cx - k * rx, cy + ry] },
   ];
   if (reversed) pts = pts.reverse().map((p) => ({ anchor: p.anchor, left: p.right, right: p.left }));
-  return pts;
+  return pts.map((p) => ({ ...p, type: PointType.SMOOTH }));
+}
+
+/**
+ * A Live Shape rounded rectangle (Rectangle tool + corner widget) as Illustrator expands it: 8 anchors,
+ * straight sides and kappa-handle quarter arcs of radius r (clamped to half the shorter side),
+ * counter-clockwise from the top of the left side.
+ */
+export function roundedRectPoints(top, left, width, height, radius) {
+  const r = Math.max(0, Math.min(radius, width / 2, height / 2)), k = ((4 * (Math.SQRT2 - 1)) / 3) * r;
+  const [l, t, ri, b] = [left, top, left + width, top - height];
+  const P = (anchor, lh, rh, type) => ({ anchor, left: lh, right: rh, type });
+  const S = PointType.SMOOTH;
+  return [
+    P([l, t - r], [l, t - r + k], [l, t - r], S), P([l, b + r], [l, b + r], [l, b + r - k], S),
+    P([l + r, b], [l + r - k, b], [l + r, b], S), P([ri - r, b], [ri - r, b], [ri - r + k, b], S),
+    P([ri, b + r], [ri, b + r - k], [ri, b + r], S), P([ri, t - r], [ri, t - r], [ri, t - r + k], S),
+    P([ri - r, t], [ri - r + k, t], [ri - r, t], S), P([l + r, t], [l + r, t], [l + r - k, t], S),
+  ];
 }
 
 export class Artboard extends Node {
@@ -208,8 +270,9 @@ export class Document extends Node {
     this._layers.push(l);
     this._active = l;
     if (sim.hasUuid) this.getPageItemFromUuid = (u) => {
+      sim.hit('getPageItemFromUuid');
       const hit = this._all().find((x) => x._uuid === String(u));
-      if (!hit) throw NO_SUCH();
+      if (!hit || (sim.compoundUuid === 'throws' && hit._parent instanceof CompoundPathItem)) throw NO_SUCH();
       return hit;
     };
     const c = containerCollections(this, () => this._active);
@@ -217,6 +280,25 @@ export class Document extends Node {
   }
   get rulerUnits() { return this._rulerUnits; }
   get documentColorSpace() { return this._colorSpace; }
+  /** 1, or 10 in a Large Canvas document (undefined before Illustrator had Large Canvas). Read-only. */
+  get scaleFactor() { return this.sim.scaleFactor === null ? undefined : this.sim.scaleFactor; }
+  /** The document's graphic styles; [0] is "[Default]", whose applyTo() resets an item's appearance. */
+  get graphicStyles() {
+    const def = {
+      typename: 'ArtStyle', name: '[Default]',
+      applyTo: (item) => {
+        this.sim.hit('ArtStyle.applyTo');
+        item.assertWritable();
+        Object.assign(item, defaultStyle());
+        if (item instanceof PathItem) {
+          Object.assign(item, { filled: true, stroked: true, strokeWidth: 1 });
+          item.fillColor = Object.assign(new RGBColor(), { red: 255, green: 255, blue: 255 });
+          item.strokeColor = new RGBColor();
+        }
+      },
+    };
+    return collection('ArtStyles', () => [def]);
+  }
   get artboards() {
     return collection('Artboards', () => this._artboards.slice(), {
       getActiveArtboardIndex: () => this._activeArtboard,
@@ -342,6 +424,7 @@ class PageItem extends Node {
   }
   /** _bounds() ([minX, minY, maxX, maxY], document coordinates) as [left, top, right, bottom] in the current system. */
   get geometricBounds() {
+    this.sim.reads++;
     const b = this._bounds(), tl = this.sim.out(this.document, [b[0], b[3]]), br = this.sim.out(this.document, [b[2], b[1]]);
     return [tl[0], tl[1], br[0], br[1]];
   }
@@ -361,6 +444,7 @@ class PageItem extends Node {
   /** Map every coordinate through f (used by translate/resize). */
   _transform() { throw new Error('not transformable'); }
   translate(dx = 0, dy = 0) {
+    this.sim.hit('translate');
     this.assertWritable();
     this._transform((p) => [p[0] + dx, p[1] + dy]);
   }
@@ -381,6 +465,12 @@ class PageItem extends Node {
     const sx = scaleX / 100, sy = scaleY / 100;
     this._transform((p) => [ref[0] + (p[0] - ref[0]) * sx, ref[1] + (p[1] - ref[1]) * sy]);
     this._scaleStroke(changeLineWidths / 100);
+    // A Live Shape keeps its corner radius unless Scale Corners is on (policyForPreservingCorners 1).
+    if (this._live) {
+      const [nl, nb, nr, nt] = [ref[0] + (minX - ref[0]) * sx, ref[1] + (minY - ref[1]) * sy, ref[0] + (maxX - ref[0]) * sx, ref[1] + (maxY - ref[1]) * sy];
+      if (this.sim.preferences.integer.policyForPreservingCorners === 1) this._live.radius *= Math.sqrt(Math.abs(sx * sy));
+      this._setPoints(roundedRectPoints(Math.max(nt, nb), Math.min(nl, nr), Math.abs(nr - nl), Math.abs(nt - nb), this._live.radius));
+    }
   }
   _scaleStroke() {}
 }
@@ -394,19 +484,19 @@ export class PathPoint extends Node {
     this._sel = PathPointSelection.NOSELECTION;
   }
   _w(what, v) { this.sim.hit(`PathPoint.${what}`); this._parent.assertWritable(); return this.sim.in(this.document, v, what); }
-  get anchor() { return this.sim.out(this.document, this._a); }
+  get anchor() { this.sim.reads++; return this.sim.out(this.document, this._a); }
   set anchor(v) { this._a = this._w('anchor', v); }
-  get leftDirection() { return this.sim.out(this.document, this._l); }
+  get leftDirection() { this.sim.reads++; return this.sim.out(this.document, this._l); }
   set leftDirection(v) { this._l = this._w('leftDirection', v); }
-  get rightDirection() { return this.sim.out(this.document, this._r); }
+  get rightDirection() { this.sim.reads++; return this.sim.out(this.document, this._r); }
   set rightDirection(v) { this._r = this._w('rightDirection', v); }
-  get pointType() { return this._type; }
+  get pointType() { this.sim.reads++; return this._type; }
   set pointType(v) {
     this._parent.assertWritable();
     if (v !== PointType.SMOOTH && v !== PointType.CORNER) throw new Error('pointType: expected PointType');
     this._type = v;
   }
-  get selected() { return this._sel; }
+  get selected() { this.sim.reads++; return this._sel; }
   set selected(v) { this._sel = v; }
   remove() { this._parent.assertWritable(); const l = this._parent._points; l.splice(l.indexOf(this), 1); }
 }
@@ -424,6 +514,8 @@ export class PathItem extends PageItem {
     this.clipping = false;
     this.guides = false;
     this.evenodd = false;
+    Object.assign(this, defaultStyle());
+    this._live = null;               // {radius} for a Live Shape rounded rectangle
   }
   get pathPoints() {
     return collection('PathPoints', () => this._points.slice(), {
@@ -519,6 +611,8 @@ export class TextFrame extends PageItem {
     this.contents = '';
     this._anchor = [0, 0];
     this.rotation = 0;               // simulator bookkeeping: total rotate() angle, degrees CCW
+    this.opacity = 100;
+    this.blendingMode = BlendModes.NORMAL;
     const frame = this;
     this.textRange = {
       characterAttributes: { size: 12, fillColor: new RGBColor(), strokeColor: new NoColor() },
@@ -527,16 +621,34 @@ export class TextFrame extends PageItem {
     };
   }
   get anchor() { return this.sim.out(this.document, this._anchor); }
-  set anchor(v) { this.sim.hit('TextFrame.anchor'); this.assertWritable(); this._anchor = this.sim.in(this.document, v, 'anchor'); }
-  /** Approximate visual centre: glyph box 0.6·size wide per character, cap height 0.7·size. */
-  _center() {
+  set anchor(v) {
+    this.sim.hit('TextFrame.anchor');
+    this.assertWritable();
+    if (this.sim.labelAnchor === 'throws') throw new Error('anchor: the property is read-only');
+    if (this.sim.labelAnchor === 'ignored') return;
+    this._anchor = this.sim.in(this.document, v, 'anchor');
+  }
+  /** The unrotated glyph box around the baseline anchor: 0.6·size wide per character, from 0.25·size
+   * below the baseline (descent) to 0.95·size above it (ascent), so its centre is 0.35·size above. */
+  _box() {
     const size = this.textRange.characterAttributes.size, w = 0.6 * size * String(this.contents).length;
     const j = this.textRange.paragraphAttributes.justification;
-    const dx = j === Justification.CENTER ? 0 : j === Justification.RIGHT ? -w / 2 : w / 2;
-    const a = (this.rotation * Math.PI) / 180, dy = 0.35 * size;
-    return [this._anchor[0] + dx * Math.cos(a) - dy * Math.sin(a), this._anchor[1] + dx * Math.sin(a) + dy * Math.cos(a)];
+    const x0 = j === Justification.CENTER ? -w / 2 : j === Justification.RIGHT ? -w : 0;
+    return [[x0, -0.25 * size], [x0 + w, -0.25 * size], [x0 + w, 0.95 * size], [x0, 0.95 * size]];
   }
-  _bounds() { const c = this._center(); return [c[0], c[1], c[0], c[1]]; }
+  _corners() {
+    const a = (this.rotation * Math.PI) / 180;
+    return this._box().map(([x, y]) => [this._anchor[0] + x * Math.cos(a) - y * Math.sin(a), this._anchor[1] + x * Math.sin(a) + y * Math.cos(a)]);
+  }
+  /** Visual centre: the centre of the rotated glyph box. */
+  _center() {
+    const c = this._corners();
+    return [(c[0][0] + c[2][0]) / 2, (c[0][1] + c[2][1]) / 2];
+  }
+  _bounds() {
+    const c = this._corners(), xs = c.map((p) => p[0]), ys = c.map((p) => p[1]);
+    return [Math.min(...xs), Math.min(...ys), Math.max(...xs), Math.max(...ys)];
+  }
   rotate(angle) {
     this.sim.hit('TextFrame.rotate');
     this.assertWritable();
@@ -564,6 +676,17 @@ export class Application {
     return this.sim.documents[0];
   }
   get selection() { return this.activeDocument.selection; }
+  /** app.preferences: Illustrator's preference store (creold's Rescale reads and writes policyForPreservingCorners). */
+  get preferences() {
+    const sim = this.sim;
+    const get = (kind) => (key) => { const v = sim.preferences[kind][key]; return v === undefined ? (kind === 'integer' ? 0 : false) : v; };
+    const set = (kind) => (key, v) => { sim.hit(`preferences.set${kind}`); if (!sim.preferencesLocked) sim.preferences[kind][key] = v; };
+    return {
+      typename: 'Preferences',
+      getIntegerPreference: get('integer'), setIntegerPreference: set('integer'),
+      getBooleanPreference: get('boolean'), setBooleanPreference: set('boolean'),
+    };
+  }
   get coordinateSystem() { return this.sim.coordinateSystem; }
   set coordinateSystem(v) {
     const hit = Object.values(CoordinateSystem).find((m) => Number(m) === Number(v));

@@ -31,6 +31,14 @@ export const Justification = enumeration('Justification', {
   FULLJUSTIFYLASTLINECENTER: 5, FULLJUSTIFY: 6,
 });
 
+// Stroke and transparency attributes of PathItem / TextFrame (published typings: StrokeCap, StrokeJoin, BlendModes).
+export const StrokeCap = enumeration('StrokeCap', { BUTTENDCAP: 1, ROUNDENDCAP: 2, PROJECTINGENDCAP: 3 });
+export const StrokeJoin = enumeration('StrokeJoin', { MITERENDJOIN: 1, ROUNDENDJOIN: 2, BEVELENDJOIN: 3 });
+export const BlendModes = enumeration('BlendModes', {
+  NORMAL: 0, MULTIPLY: 1, SCREEN: 2, OVERLAY: 3, SOFTLIGHT: 4, HARDLIGHT: 5, COLORDODGE: 6, COLORBURN: 7,
+  DARKEN: 8, LIGHTEN: 9, DIFFERENCE: 10, EXCLUSION: 11, HUE: 12, SATURATIONBLEND: 13, COLORBLEND: 14, LUMINOSITY: 15,
+});
+
 /** Short unit name ↔ RulerUnits member, for setting up simulated documents. */
 export const UNIT_MEMBERS = {
   mm: 'Millimeters', cm: 'Centimeters', in: 'Inches', pt: 'Points', px: 'Pixels', pc: 'Picas',
