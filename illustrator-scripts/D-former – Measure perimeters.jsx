@@ -9,15 +9,24 @@
 (function () {
   var TITLE = "D-former \u2013 Measure perimeters";
 
-  /** @param {Document} doc @returns {{name: string, perPoint: number, digits: number}} */
+  /**
+   * Ruler unit of a document and how many of it one DOM point is. A Large Canvas document reports
+   * every length divided by Document.scaleFactor (10; creold/illustrator-scripts reads it the same
+   * way; feature-detected, 1 when absent), so its DOM point is scaleFactor real points.
+   * @param {Document} doc @returns {{name: string, perPoint: number, digits: number}}
+   */
   function unitsOf(doc) {
     var u = doc.rulerUnits;
-    if (u == RulerUnits.Millimeters || u == RulerUnits.Qs) return { name: "mm", perPoint: 25.4 / 72, digits: 3 };
-    if (u == RulerUnits.Centimeters) return { name: "cm", perPoint: 2.54 / 72, digits: 4 };
-    if (u == RulerUnits.Inches) return { name: "in", perPoint: 1 / 72, digits: 4 };
-    if (u == RulerUnits.Picas) return { name: "pc", perPoint: 1 / 12, digits: 3 };
-    if (u == RulerUnits.Pixels) return { name: "px", perPoint: 1, digits: 2 };
-    return { name: "pt", perPoint: 1, digits: 2 };
+    /** @type {*} */
+    var sf;
+    try { sf = /** @type {*} */ (doc).scaleFactor; } catch (e) { sf = 1; }
+    if (typeof sf !== "number" || !isFinite(sf) || !(sf > 0)) sf = 1;
+    if (u == RulerUnits.Millimeters || u == RulerUnits.Qs) return { name: "mm", perPoint: sf * 25.4 / 72, digits: 3 };
+    if (u == RulerUnits.Centimeters) return { name: "cm", perPoint: sf * 2.54 / 72, digits: 4 };
+    if (u == RulerUnits.Inches) return { name: "in", perPoint: sf / 72, digits: 4 };
+    if (u == RulerUnits.Picas) return { name: "pc", perPoint: sf / 12, digits: 3 };
+    if (u == RulerUnits.Pixels) return { name: "px", perPoint: sf, digits: 2 };
+    return { name: "pt", perPoint: sf, digits: 2 };
   }
 
   /**

@@ -9,15 +9,24 @@
 (function () {
   var TITLE = "D-former \u2013 Normalize perimeters";
 
-  /** @param {Document} doc @returns {{name: string, perPoint: number, digits: number}} */
+  /**
+   * Ruler unit of a document and how many of it one DOM point is. A Large Canvas document reports
+   * every length divided by Document.scaleFactor (10; creold/illustrator-scripts reads it the same
+   * way; feature-detected, 1 when absent), so its DOM point is scaleFactor real points.
+   * @param {Document} doc @returns {{name: string, perPoint: number, digits: number}}
+   */
   function unitsOf(doc) {
     var u = doc.rulerUnits;
-    if (u == RulerUnits.Millimeters || u == RulerUnits.Qs) return { name: "mm", perPoint: 25.4 / 72, digits: 3 };
-    if (u == RulerUnits.Centimeters) return { name: "cm", perPoint: 2.54 / 72, digits: 4 };
-    if (u == RulerUnits.Inches) return { name: "in", perPoint: 1 / 72, digits: 4 };
-    if (u == RulerUnits.Picas) return { name: "pc", perPoint: 1 / 12, digits: 3 };
-    if (u == RulerUnits.Pixels) return { name: "px", perPoint: 1, digits: 2 };
-    return { name: "pt", perPoint: 1, digits: 2 };
+    /** @type {*} */
+    var sf;
+    try { sf = /** @type {*} */ (doc).scaleFactor; } catch (e) { sf = 1; }
+    if (typeof sf !== "number" || !isFinite(sf) || !(sf > 0)) sf = 1;
+    if (u == RulerUnits.Millimeters || u == RulerUnits.Qs) return { name: "mm", perPoint: sf * 25.4 / 72, digits: 3 };
+    if (u == RulerUnits.Centimeters) return { name: "cm", perPoint: sf * 2.54 / 72, digits: 4 };
+    if (u == RulerUnits.Inches) return { name: "in", perPoint: sf / 72, digits: 4 };
+    if (u == RulerUnits.Picas) return { name: "pc", perPoint: sf / 12, digits: 3 };
+    if (u == RulerUnits.Pixels) return { name: "px", perPoint: sf, digits: 2 };
+    return { name: "pt", perPoint: sf, digits: 2 };
   }
 
   /**
@@ -106,6 +115,60 @@
     }
   }
 
+  /** Relative perimeter error above which a path counts as missing the target (Illustrator stores 32-bit floats). */
+  var MISS = 1e-6;
+  var CORNERS = "policyForPreservingCorners";
+
+  /**
+   * Run fn with Illustrator's "Scale Corners" on, and put the student's setting back afterwards.
+   * Without it a Live Shape rounded rectangle keeps its corner radius under resize() and misses the
+   * target perimeter. The preference is 1 = scale corners, 2 = keep them (creold/illustrator-scripts
+   * Rescale and ResizeToSize set it the same way). Feature-detected: older versions have no such
+   * preference, and fit() corrects what remains.
+   * @param {function(): void} fn
+   */
+  function withScaledCorners(fn) {
+    /** @type {*} */
+    var prefs = null;
+    var saved = 0;
+    try {
+      prefs = app.preferences;
+      saved = prefs.getIntegerPreference(CORNERS);
+      if (saved !== 1) prefs.setIntegerPreference(CORNERS, 1);
+    } catch (e) {
+      prefs = null;
+    }
+    try {
+      fn();
+    } finally {
+      if (prefs && saved !== 1) {
+        try { prefs.setIntegerPreference(CORNERS, saved); } catch (e2) { /* the student's setting could not be put back */ }
+      }
+    }
+  }
+
+  /**
+   * Scale p by pct about pivot, then measure it again (PathItem.length) and correct until it is within
+   * 1e-9 of target (at most 6 corrections). Secant steps on the total scale s: a shape that keeps part
+   * of itself, such as a Live Shape's corners (length a s - b), is exact after one correction.
+   * Returns the final length.
+   * @param {PathItem} p @param {number} target @param {number} pct @param {*} pivot @returns {number}
+   */
+  function fit(p, target, pct, pivot) {
+    var s0 = 1, l0 = p.length, s = pct / 100;
+    p.resize(pct, pct, true, true, true, true, 100, pivot);
+    var len = p.length;
+    for (var k = 0; k < 6 && Math.abs(len - target) > 1e-9 * target && len > 0; k++) {
+      var next = len !== l0 ? s + (target - len) * (s - s0) / (len - l0) : s * target / len;
+      if (!(next > 0) || !isFinite(next)) next = s * target / len;
+      var c = 100 * next / s;
+      p.resize(c, c, true, true, true, true, 100, pivot);
+      s0 = s; l0 = len; s = next;
+      len = p.length;
+    }
+    return len;
+  }
+
   inDocumentCoordinates(function () {
     if (app.documents.length === 0) {
       alert("No document is open. Open a document and select the outlines to normalize.", TITLE);
@@ -171,11 +234,19 @@
       return (points * units.perPoint).toFixed(units.digits) + " " + units.name;
     }
     var lines = ["Target perimeter: " + show(target)];
-    for (i = 0; i < paths.length; i++) {
-      var pct = 100 * factors[i];
-      paths[i].resize(pct, pct, true, true, true, true, 100, pivot);
-      lines.push((paths[i].name ? paths[i].name : "Path " + (i + 1)) + ": " + show(lengths[i]) + " \u2192 " + show(paths[i].length) +
-        " (scaled " + pct.toFixed(4) + " %)");
+    var missed = [];
+    withScaledCorners(function () {
+      for (i = 0; i < paths.length; i++) {
+        var pct = 100 * factors[i];
+        var got = fit(paths[i], target, pct, pivot);
+        var name = paths[i].name ? paths[i].name : "Path " + (i + 1);
+        lines.push(name + ": " + show(lengths[i]) + " \u2192 " + show(got) + " (scaled " + (100 * got / lengths[i]).toFixed(4) + " %)");
+        if (Math.abs(got - target) > MISS * target) missed.push(name + " (" + show(got) + ")");
+      }
+    });
+    if (missed.length) {
+      lines.push("Not at the target: " + missed.join(", ") + ". A Live Shape keeps its corner radius when scaled; " +
+        "expand it (Object > Shape > Expand Shape) and run the script again, or use Edit > Undo.");
     }
     alert(lines.join("\n"), TITLE);
   });

@@ -157,3 +157,38 @@ test('Measure and Normalize work in document coordinates and restore the student
   assert.match(none.runScript(MEASURE)[0], /No document is open/);
   assert.equal(none.app.coordinateSystem, ARTBOARD(none));
 });
+
+// Issue 11, item 3: a Large Canvas document (Document.scaleFactor 10) reports lengths divided by 10.
+test('test_issue_11_large_canvas_standalone: Measure shows real lengths and Normalize reaches an exact length typed in real mm', () => {
+  const big = () => createHost({ units: 'mm', scaleFactor: 10, shapes: shapes() });
+  const m = big();
+  const [msg] = m.runScript(MEASURE);
+  const want = 10 * referenceLengthOf(m.find('B')) * MM;
+  const got = Number(msg.match(/^B: ([0-9.]+) mm$/m)[1]);
+  assert.ok(Math.abs(got - want) <= 0.0005, `B printed: wanted ${want.toFixed(3)} mm (10 x the DOM length), got ${got} mm`);
+  const h = big();
+  const [out] = h.runScript(NORMALIZE, answer(4, '2500'));
+  assert.match(out, /^Target perimeter: 2500\.000 mm$/m, out);
+  for (const n of ['A', 'B', 'C']) {
+    const real = 10 * referenceLengthOf(h.find(n)) * MM;
+    assert.ok(relErr(real, 2500) < 1e-9, `${n}: wanted 2500 mm printed, got ${real} mm (DOM ${referenceLengthOf(h.find(n)) * MM} mm)`);
+  }
+});
+
+// Issue 11, item 6: a Live Shape rounded rectangle keeps its corner radius under resize() unless
+// policyForPreservingCorners is 1 ("Scale Corners"), so one resize by target / length misses.
+test('test_issue_11_live_shape_corners: Normalize reaches the target on a Live Shape rounded rectangle and restores Scale Corners', () => {
+  for (const preferencesLocked of [false, true]) {
+    const h = createHost({ units: 'mm', preferencesLocked, shapes: [
+      { name: 'R', roundedRect: { top: 0, left: 0, width: 200, height: 120, radius: 30 } },
+      { name: 'E', ellipse: { top: 300, left: 300, width: 260, height: 200 } },
+    ] });
+    const want = referenceLengthOf(h.find('E'));
+    const [out] = h.runScript(NORMALIZE, answer(0));
+    const got = referenceLengthOf(h.find('R'));
+    const what = preferencesLocked ? 'preference cannot be set (corrected by re-measuring)' : 'Scale Corners set for the resize';
+    assert.ok(relErr(got, want) < 1e-9, `${what}: rounded rectangle wanted ${want}, got ${got}`);
+    assert.doesNotMatch(out, /Not at the target/, out);
+    assert.equal(h.sim.preferences.integer.policyForPreservingCorners, 2, `${what}: the student's Scale Corners setting (off) is restored`);
+  }
+});
