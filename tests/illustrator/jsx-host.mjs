@@ -155,7 +155,8 @@ export function createHost(o = {}) {
   };
   /** The ExtendScript engine forgets the bridge (CEP-Resources issue 39: ScriptPath is loaded only at panel start-up). */
   host.loseBridge = () => {
-    for (const k of Object.keys(context)) if (/^(dformer_|DFORMER_)/.test(k)) delete context[k];
+    // Function declarations are not deletable globals: overwrite them (calling one then throws, as an unknown name does).
+    for (const k of Object.keys(context)) if (/^(dformer_|DFORMER_)/.test(k)) context[k] = undefined;
   };
   /** Run a standalone File > Scripts script; `respond` answers its dialog. Returns the new alerts. */
   host.runScript = (file, respond) => {

@@ -1,12 +1,17 @@
 // A CEP stand-in for the panel tests: defines `window.__adobe_cep__` (the native object Adobe's
 // CSInterface wraps) before the page loads. evalScript goes to the exposed __dformerEvalScript,
 // which runs the real illustrator-scripts/*.jsx in the simulated Illustrator DOM (jsx-host.mjs).
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
 import { createHost } from '../illustrator/jsx-host.mjs';
+
+/** The built extension folder (node uxp-panel/build.mjs): getSystemPath('extension'), where the panel reloads the bridge from. */
+const EXTENSION = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..', 'dist', 'com.dformer.panel');
 
 /** Illustrator's panel brightness presets (appSkinInfo.panelBackgroundColor). */
 export const SKINS = { dark: [50, 50, 50], mediumDark: [83, 83, 83], mediumLight: [184, 184, 184], light: [240, 240, 240] };
 
-function installCep(skin) {
+function installCep({ skin, extensionUrl }) {
   const listeners = {};
   window.__cepSkin = skin;
   window.__cepListeners = listeners;
@@ -24,6 +29,9 @@ function installCep(skin) {
     },
     addEventListener(type, fn) {
       (listeners[type] = listeners[type] || []).push(fn);
+    },
+    getSystemPath(type) {
+      return type === 'extension' ? extensionUrl : '';
     },
   };
   /** Test hook: Illustrator changes its brightness and fires ThemeColorChanged. */
@@ -46,7 +54,7 @@ export async function openPanel(browser, url, hostOptions, { skin = SKINS.dark, 
     calls.push(String(script).slice(0, 40));
     return host.evalScript(script);
   });
-  await page.addInitScript(installCep, skin);
+  await page.addInitScript(installCep, { skin, extensionUrl: `file://${encodeURI(EXTENSION)}` });
   await page.goto(url);
   return { page, host, calls, errors };
 }

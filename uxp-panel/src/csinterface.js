@@ -4,9 +4,11 @@
  *   evalScript(script, callback)      run ExtendScript in Illustrator; callback(resultString)
  *   getHostEnvironment()              { appName, appVersion, appSkinInfo: { panelBackgroundColor: { color: {red,green,blue} } } }
  *   addEventListener(type, handler)   CSXS events, e.g. 'com.adobe.csxs.events.ThemeColorChanged',
- *                                     'documentAfterActivate', 'documentAfterDeactivate'
+ *                                     'documentAfterActivate', 'documentAfterDeactivate',
+ *                                     'com.adobe.csxs.events.panelWindowStatusChanged'
+ *   getSystemPath('extension')        the extension's folder as a plain path (to reload the bridge)
  *
- * Adobe's full CSInterface.js (≈1,200 lines) is not bundled: these four native calls are all we need,
+ * Adobe's full CSInterface.js (≈1,200 lines) is not bundled: these five native calls are all we need,
  * and they exist unchanged from CEP 4 to CEP 12. */
 (function (DF) {
   'use strict';
@@ -24,6 +26,13 @@
     return new Promise(function (resolve) {
       self.native.evalScript(script, resolve);
     });
+  };
+  /** Like CSInterface.getSystemPath: the native answer is a file: URL; decoded, without the scheme
+   * ("file:///C:/…" → "C:/…" on Windows, "file:///Users/…" → "/Users/…" on macOS). */
+  CSInterface.prototype.getSystemPath = function (type) {
+    if (!this.native.getSystemPath) return '';
+    var url = decodeURI(String(this.native.getSystemPath(type) || ''));
+    return /^file:\/\/\/[A-Za-z]:/.test(url) ? url.slice(8) : url.replace(/^file:\/\//, '');
   };
   CSInterface.prototype.getHostEnvironment = function () {
     var env = this.native.getHostEnvironment();
