@@ -49,11 +49,11 @@ for (const c of CASES) {
   });
 }
 
-test('CEP mapping: MVP → CEP 8 / Illustrator 22; SIMD → CEP 12 (Illustrator release not documented)', () => {
+test('CEP mapping: MVP → CEP 8 / Illustrator 22; SIMD → CEP 12 / Illustrator 29.5.1 (the CEP 12 Cookbook\'s table)', () => {
   assert.deepEqual(minimumCep(57), { cep: 8, chromium: 57, illustrator: '22.0' });
   assert.deepEqual(minimumCep(75), { cep: 11, chromium: 88, illustrator: '25.3' });
   assert.equal(minimumCep(91).cep, 12);
-  assert.equal(minimumCep(91).illustrator, null);
+  assert.equal(minimumCep(91).illustrator, '29.5.1');
   assert.equal(minimumCep(114), null);
 });
 

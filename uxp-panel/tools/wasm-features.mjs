@@ -31,7 +31,8 @@ export const CEP_RELEASES = [
   { cep: 9, chromium: 61, illustrator: '23.0' },
   { cep: 10, chromium: 74, illustrator: '25.0' },
   { cep: 11, chromium: 88, illustrator: '25.3' },
-  { cep: 12, chromium: 99, illustrator: null }, // Adobe lists Illustrator as "TBD" for CEP 12
+  // CEP 12 HTML Extension Cookbook, application table (FY2024 column): Illustrator 29.5.1 (CEP 12).
+  { cep: 12, chromium: 99, illustrator: '29.5.1' },
 ];
 
 /**
