@@ -201,3 +201,70 @@ test('Document.documentColorSpace is read-only: RGB by default, CMYK when the ho
   assert.equal(h.doc.documentColorSpace, h.context.DocumentColorSpace.CMYK);
   assert.throws(() => { h.doc.documentColorSpace = h.context.DocumentColorSpace.RGB; });
 });
+
+// What real Illustrator does beyond the Scripting Reference's member lists (issue 11; sources in
+// illustrator-scripts/BRIDGE.md, "What the simulated DOM models").
+test('sim: new paths and text take the current style; [Default] graphic style resets it', () => {
+  const h = createHost({ style: { strokeDashes: [4, 2], opacity: 50, blendingMode: 'MULTIPLY', brush: 'Charcoal' } });
+  const p = h.doc.pathItems.add();
+  assert.deepEqual([...p.strokeDashes], [4, 2]);
+  assert.equal(p.opacity, 50);
+  assert.equal(String(p.blendingMode), 'BlendModes.MULTIPLY');
+  assert.equal(p.brush, 'Charcoal');
+  const t = h.doc.textFrames.add();
+  assert.equal(t.opacity, 50, 'text frames inherit the transparency too');
+  h.doc.graphicStyles[0].applyTo(p);
+  assert.deepEqual([[...p.strokeDashes], p.opacity, String(p.blendingMode), p.brush, p.strokeWidth], [[], 100, 'BlendModes.NORMAL', null, 1]);
+  const fixture = createHost({ style: { opacity: 10 }, shapes: [{ name: 'A', rect: { top: 0, left: 0, width: 1, height: 1 } }] });
+  assert.equal(fixture.find('A').opacity, 100, 'fixture shapes are not drawn with the current style');
+});
+
+test('sim: pointText puts the baseline at the point; bounds are the rotated glyph box, centred 0.35 size above the baseline', () => {
+  const h = createHost();
+  const tf = h.doc.textFrames.pointText([100, 50]);
+  tf.contents = 'ABCD';
+  tf.textRange.characterAttributes.size = 10;
+  tf.textRange.paragraphAttributes.justification = h.context.Justification.CENTER;
+  assert.deepEqual(tf.anchor, [100, 50]);
+  let [l, t, r, b] = tf.geometricBounds;
+  assert.deepEqual([l, t, r, b].map((v) => Math.round(v * 1e9) / 1e9), [88, 59.5, 112, 47.5], '24 wide (0.6 size per glyph), -2.5..+9.5 around the baseline');
+  tf.rotate(90);
+  [l, t, r, b] = tf.geometricBounds;
+  assert.ok(Math.abs((l + r) / 2 - 100) < 1e-9 && Math.abs((t + b) / 2 - 53.5) < 1e-9, 'rotation about the centre keeps the bounds centre');
+  assert.ok(Math.abs(r - l - 12) < 1e-9 && Math.abs(t - b - 24) < 1e-9, 'rotated box is 12 wide, 24 high');
+  for (const mode of ['throws', 'ignored']) {
+    const k = createHost({ labelAnchor: mode }).doc.textFrames.add();
+    if (mode === 'throws') assert.throws(() => { k.anchor = [1, 2]; }, /read-only/);
+    else { k.anchor = [1, 2]; assert.deepEqual(k.anchor, [0, 0], 'ignored'); }
+  }
+});
+
+test('sim: Document.scaleFactor, app.preferences and Live Shape corners under resize()', () => {
+  assert.equal(createHost().doc.scaleFactor, 1);
+  assert.equal(createHost({ scaleFactor: 10 }).doc.scaleFactor, 10);
+  assert.equal(createHost({ scaleFactor: null }).doc.scaleFactor, undefined, 'older Illustrator: no such property');
+  const h = createHost({ shapes: [{ name: 'R', roundedRect: { top: 0, left: 0, width: 100, height: 60, radius: 10 } }] });
+  const R = h.find('R');
+  const prefs = h.app.preferences;
+  assert.equal(prefs.getIntegerPreference('policyForPreservingCorners'), 2, 'Scale Corners is off by default');
+  // Closed form with the simulator's kappa arcs: the straight parts scale, the corners do not.
+  const arcs = referenceLengthOf(R) - 2 * (100 + 60 - 4 * 10);
+  R.resize(200, 200);
+  close(referenceLengthOf(R), 2 * (200 + 120 - 4 * 10) + arcs, 1e-6, 'corner radius kept');
+  prefs.setIntegerPreference('policyForPreservingCorners', 1);
+  R.resize(50, 50);
+  close(referenceLengthOf(R), (2 * (200 + 120 - 4 * 10) + arcs) / 2, 1e-6, 'Scale Corners on: uniform scaling halves the length');
+  const locked = createHost({ preferencesLocked: true });
+  locked.app.preferences.setIntegerPreference('policyForPreservingCorners', 1);
+  assert.equal(locked.app.preferences.getIntegerPreference('policyForPreservingCorners'), 2, 'a locked store ignores the setter');
+});
+
+test('sim: getPageItemFromUuid misses a compound path\'s sub-path unless told otherwise', () => {
+  const shapes = [{ name: 'C', subName: 'inner', kind: 'compound', polygon: [[0, 0], [5, 0], [5, 5]] }];
+  const h = createHost({ shapes });
+  const inner = h.find('inner');
+  assert.equal(h.doc.getPageItemFromUuid(h.find('C').uuid), h.find('C'));
+  assert.throws(() => h.doc.getPageItemFromUuid(inner.uuid), /No such element/);
+  const w = createHost({ shapes, compoundUuid: 'works' });
+  assert.equal(w.doc.getPageItemFromUuid(w.find('inner').uuid), w.find('inner'));
+});

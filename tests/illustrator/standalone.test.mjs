@@ -192,3 +192,13 @@ test('test_issue_11_live_shape_corners: Normalize reaches the target on a Live S
     assert.equal(h.sim.preferences.integer.policyForPreservingCorners, 2, `${what}: the student's Scale Corners setting (off) is restored`);
   }
 });
+
+test('test_issue_11_normalize_names_a_path_it_cannot_fit: a path whose resize does not take is named with the fix, the others reach the target', () => {
+  const h = createHost({ units: 'mm', shapes: shapes() });
+  const stuck = h.find('B');
+  stuck.resize = () => {}; // Illustrator accepts the call and changes nothing (an envelope, a live effect...)
+  const want = Math.max(...['A', 'B', 'C'].map((n) => referenceLengthOf(h.find(n))));
+  const [out] = h.runScript(NORMALIZE, answer(0));
+  assert.match(out, /Not at the target: B \([0-9.]+ mm\)\. A Live Shape keeps its corner radius when scaled; expand it \(Object > Shape > Expand Shape\)/, out);
+  for (const n of ['A', 'C']) assert.ok(relErr(referenceLengthOf(h.find(n)), want) < 1e-9, `${n} reaches the target`);
+});

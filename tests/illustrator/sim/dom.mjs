@@ -342,7 +342,8 @@ export class Document extends Node {
     return collection('GroupItems', () => this._all().filter((x) => x instanceof GroupItem), { add: this._c.groupItems().add });
   }
   get textFrames() {
-    return collection('TextFrameItems', () => this._all().filter((x) => x instanceof TextFrame), { add: this._c.textFrames().add });
+    const c = this._c.textFrames();
+    return collection('TextFrameItems', () => this._all().filter((x) => x instanceof TextFrame), { add: c.add, pointText: c.pointText });
   }
   get compoundPathItems() {
     return collection('CompoundPathItems', () => this._all().filter((x) => x instanceof CompoundPathItem));
