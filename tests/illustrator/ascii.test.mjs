@@ -1,6 +1,6 @@
 // Every ExtendScript file is plain ASCII (issue 11, item 7): ExtendScript decodes a .jsx without a
-// BOM in the system's legacy encoding on some set-ups (hyperbrew/bolt-cep issues 137 and 159:
-// "strings from CEP encoded in macroman"), so a raw "..." or "e-acute" in a message becomes mojibake.
+// BOM in the system's legacy encoding on some set-ups (hyperbrew/bolt-cep issue 137, "strings from
+// CEP encoded in macroman"; issue 159), so a raw ellipsis or an accent in a message becomes mojibake.
 // Characters outside ASCII are written as \uXXXX escapes instead. A negative control keeps the check honest.
 import test from 'node:test';
 import assert from 'node:assert/strict';
