@@ -863,16 +863,18 @@ function dformer_draw(group, path, name, style) {
 /**
  * New art takes the document's current style (what the student last drew with: dashes, round caps,
  * 50 % opacity, Multiply, a brush). Laser software needs a plain hairline, so reset all of it: the
- * [Default] graphic style first (the only DOM route that removes a brush, as Illustrator's
- * Graphic Styles panel does), then every stroke and transparency attribute explicitly, in case the
- * student edited [Default]. Best effort for the graphic style; the explicit attributes must stick.
+ * [Default] graphic style first (GraphicStyle.applyTo: the only DOM route that removes a brush),
+ * then every stroke and transparency attribute explicitly, in case the student edited [Default].
+ * Best effort for the graphic style; the explicit attributes must stick.
  * @param {GroupItem} group @param {PathItem} p
  */
 function dformer_plainStroke(group, p) {
   try {
     /** @type {*} */
     var styles = dformer_docOf(group).graphicStyles;
-    if (styles && styles.length > 0) styles[0].applyTo(p);
+    // Only the built-in first style ("[Default]", bracketed in every language): a style the student
+    // made could carry effects (a drop shadow) that no attribute below would undo.
+    if (styles && styles.length > 0 && /^\[.*\]$/.test(String(styles[0].name))) styles[0].applyTo(p);
   } catch (e) { /* no [Default] style: the attributes below still make a plain stroke */ }
   p.strokeDashes = [];
   p.strokeDashOffset = 0;
