@@ -402,11 +402,14 @@ var DFORMER_SKIP = {
 
 /** A D-form has two pieces: the poll and the selection read the geometry of at most this many paths. */
 var DFORMER_PIECES = 2;
+/** Selected objects looked at before the walk gives up with `more` (two paths and thousands of text
+ * frames would otherwise cost several reads per object on every poll). */
+var DFORMER_VISITS = 500;
 
 /**
  * Walk the selection into readable paths and skipped items (rules in BRIDGE.md). Stops at the
- * (DFORMER_PIECES + 1)th path (`more`): a Select All of hundreds of paths costs a few reads, not a
- * walk of every item (ExtendScript runs on Illustrator's main thread).
+ * (DFORMER_PIECES + 1)th path or the DFORMER_VISITS-th object (`more`): a Select All of hundreds of
+ * paths costs a few reads, not a walk of every item (ExtendScript runs on Illustrator's main thread).
  * @param {Document} doc
  * @returns {{paths: Array<{item: PathItem, id: string}>, skipped: Array<{name: string, reason: string}>, more: boolean, selected: number}}
  */
@@ -418,6 +421,7 @@ function dformer_collect(doc) {
   /** @type {Object<string, boolean>} */
   var seen = {};
   var more = false;
+  var visits = 0;
   /** @param {PathItem} p @param {string} label */
   function takePath(p, label) {
     if (p.clipping) { skipped.push({ name: label, reason: "clipping path: it masks its group; D-former leaves it alone" }); return; }
@@ -432,6 +436,7 @@ function dformer_collect(doc) {
   /** @param {*} it */
   function visit(it) {
     if (more) return;
+    if (++visits > DFORMER_VISITS) { more = true; return; }
     var t = it.typename;
     var label = dformer_nameOf(it);
     // Selecting a group selects everything in it, also what the student hid or locked there

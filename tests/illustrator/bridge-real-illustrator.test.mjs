@@ -60,6 +60,11 @@ test('test_issue_11_select_all_300_paths_poll_is_bounded: the poll reads a few p
       assert.notEqual(h.evalScript('dformer_selectionKey()'), key, 'one fewer selected path changes the key');
     }
   }
+  // Two paths among 600 text frames: the walk gives up after 500 objects instead of visiting all on every poll.
+  const texts = createHost({ shapes: [...shapes.slice(0, 2), ...Array.from({ length: 600 }, (_, i) => ({ name: `t${i}`, kind: 'text' }))] });
+  const t = call(texts, 'dformer_selection');
+  assert.equal(t.more, true, 'more than 500 selected objects: the "select two paths" state');
+  assert.ok(JSON.stringify(t).length <= 400, `answer wanted <= 400 characters, got ${JSON.stringify(t).length}`);
   // Two pieces: the key reads their points (5 per point: selection, anchor, both handles, + bounds), nothing else.
   const two = createHost({ shapes: shapes.slice(0, 2) });
   two.sim.reads = 0;

@@ -139,7 +139,7 @@ test('test_issue_11_select_all_panel_state: beyond two paths the panel says to s
   const sel = p.selections.at(-1);
   assert.equal(sel.ok, false);
   assert.equal(sel.pieces.length, 0);
-  assert.match(sel.error, /More than two paths are selected: select exactly two closed paths/);
+  assert.match(sel.error, /More than two paths \(or more than 500 objects\) are selected: select exactly two closed paths/);
 });
 
 test('test_issue_11_lost_callback: a lost evalScript callback does not stop polling and Apply for good', async () => {

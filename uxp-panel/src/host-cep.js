@@ -124,7 +124,7 @@
         if (!r.ok) return { ok: false, error: r.error, pieces: [], units: 'pt', skipped: [] };
         if (r.more) {
           // The bridge sends no geometry beyond two paths (a Select All would stall Illustrator).
-          return { ok: false, error: 'More than two paths are selected: select exactly two closed paths (a D-form joins two pieces).', document: r.document, pieces: [], units: DF.units.known(r.units), skipped: [] };
+          return { ok: false, error: 'More than two paths (or more than 500 objects) are selected: select exactly two closed paths (a D-form joins two pieces).', document: r.document, pieces: [], units: DF.units.known(r.units), skipped: [] };
         }
         return {
           ok: true,
