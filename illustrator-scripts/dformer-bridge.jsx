@@ -299,9 +299,9 @@ function dformer_indexIn(coll, child) {
  */
 function dformer_idOf(p) {
   /** @type {*} */
-  var parent = p.parent;
-  if (parent && parent.typename === "CompoundPathItem") {
-    if (dformer_hasUuid(parent)) return "c:" + parent.uuid + "/" + dformer_indexIn(parent.pathItems, p) + "#" + p.pathPoints.length;
+  var owner = p.parent;
+  if (owner && owner.typename === "CompoundPathItem") {
+    if (dformer_hasUuid(owner)) return "c:" + owner.uuid + "/" + dformer_indexIn(owner.pathItems, p) + "#" + p.pathPoints.length;
   } else if (dformer_hasUuid(p)) return "u:" + p.uuid;
   var parts = [];
   /** @type {*} */

@@ -9,3 +9,13 @@ interface Document {
    */
   getPageItemFromUuid?: (uuid: string) => PageItem
 }
+
+interface TextFrameItems {
+  /**
+   * Creates a point text frame whose baseline starts at `anchor`. An instance method of the
+   * collection (ai-scripting.docsforadobe.dev, TextFrameItems.pointText:
+   * `app.activeDocument.textFrames.pointText(anchor[, orientation])`); the 2022 typings declare it
+   * static by mistake.
+   */
+  pointText(anchor: Point | [number, number], orientation?: TextOrientation): TextFrame
+}

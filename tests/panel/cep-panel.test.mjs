@@ -238,3 +238,21 @@ test('teeth: each piece gets its toothed cut outline on the Cut layer; the norma
   for (const o of outlines) assert.ok(lengthOf(o) > pa, `a toothed edge (${lengthOf(o)}) is longer than the plain one (${pa})`);
   await page.close();
 });
+
+// Issue 11, item 7: ExtendScript may decode text crossing evalScript in a legacy encoding; the stand-in's
+// 'legacy' transport mangles every non-ASCII character both ways, as that would.
+test('test_issue_11_accented_names_in_the_panel: "D\u00e9coupe.ai" with layers "D\u00e9coupe" and "Gravure" applies, names intact', async () => {
+  const { page, host, errors } = await openPanel(panel.browser, panel.url, { ...TWO_SHAPES, document: 'D\u00e9coupe.ai', transport: 'legacy' });
+  await waitReady(page);
+  assert.match(await page.textContent('#selection-summary'), /2 paths selected · D\u00e9coupe\.ai/);
+  await page.click('#sec-layers summary');
+  await page.fill('.layer-row[data-layer="cut"] .layer-name', 'D\u00e9coupe');
+  await page.press('.layer-row[data-layer="cut"] .layer-name', 'Tab');
+  await page.fill('.layer-row[data-layer="engrave"] .layer-name', 'Gravure');
+  await page.press('.layer-row[data-layer="engrave"] .layer-name', 'Tab');
+  await applyOk(page);
+  const layers = host.snapshot()[0].layers.map((l) => l.name).sort();
+  assert.deepEqual(layers, ['D\u00e9coupe', 'Gravure', 'Layer 1', 'Score'], `layers: ${layers}`);
+  assert.deepEqual(errors, [], 'no page errors');
+  await page.close();
+});
