@@ -62,11 +62,12 @@ function panelHost(hostOptions, { timeoutMs = 2000, applyTimeoutMs = 120000, ext
   const listeners = {};
   const sent = [];
   let dropping = 0;
+  let dropWhen = () => false;
   const native = {
     evalScript(script, callback) {
       sent.push(String(script));
       const answer = jsx.evalScript(script);
-      if (dropping > 0) { dropping--; return; } // Illustrator ran it, the callback never comes
+      if (dropping > 0 || dropWhen(String(script))) { dropping = Math.max(0, dropping - 1); return; } // Illustrator ran it, the callback never comes
       clock.setTimeout(() => callback(answer), 5);
     },
     getHostEnvironment: () => JSON.stringify({ appName: 'ILST', appVersion: '28.0.0', appSkinInfo: { panelBackgroundColor: { color: { red: 50, green: 50, blue: 50 } } } }),
@@ -85,7 +86,7 @@ function panelHost(hostOptions, { timeoutMs = 2000, applyTimeoutMs = 120000, ext
   const host = DF.createCepHost(new DF.CSInterface(native), { pollMs: 400, timeoutMs, applyTimeoutMs });
   const selections = [];
   const emit = (type, data) => { for (const fn of listeners[type] || []) fn(JSON.stringify({ type, data })); };
-  return { host, jsx, clock, sent, selections, emit, drop: (n) => { dropping = n; }, DF,
+  return { host, jsx, clock, sent, selections, emit, drop: (n) => { dropping = n; }, dropWhen: (f) => { dropWhen = f; }, DF,
     start: () => host.start({ selection: (s) => selections.push(s), theme: () => {} }) };
 }
 const keyPolls = (p) => p.sent.filter((s) => s === 'dformer_selectionKey()').length;
@@ -155,6 +156,14 @@ test('test_issue_11_lost_callback: a lost evalScript callback does not stop poll
   await p.clock.advance(1000);
   const b = p.selections.at(-1).pieces.find((x) => x.name === 'B');
   assert.equal(JSON.stringify(b.path.points[0].anchor), JSON.stringify(p.jsx.find('B').pathPoints[0].anchor), 'changes are seen again');
+  // The full read after a change loses its answer: the panel reads again on a later poll.
+  let lose = 1;
+  p.dropWhen((s) => s === 'dformer_selection()' && lose-- > 0);
+  p.jsx.find('A').translate(0, 9);
+  await p.clock.advance(4000);
+  const a = p.selections.at(-1).pieces.find((x) => x.name === 'A');
+  assert.ok(a, `after a lost selection read the panel reads again (last: ${JSON.stringify(p.selections.at(-1)).slice(0, 120)})`);
+  assert.equal(JSON.stringify(a.path.points[0].anchor), JSON.stringify(p.jsx.find('A').pathPoints[0].anchor));
   // Apply whose answer never comes: a clear message after the Apply timeout, not a panel stuck forever.
   const q = panelHost(TWO, { applyTimeoutMs: 3000 });
   q.drop(Infinity);

@@ -121,7 +121,7 @@
     }
     function readSelection() {
       return call('dformer_selection()', 'the selection request').then(function (r) {
-        if (!r.ok) return { ok: false, error: r.error, pieces: [], units: 'pt', skipped: [] };
+        if (!r.ok) return { ok: false, error: r.error, timeout: !!r.timeout, pieces: [], units: 'pt', skipped: [] };
         if (r.more) {
           // The bridge sends no geometry beyond two paths (a Select All would stall Illustrator).
           return { ok: false, error: 'More than two paths (or more than 500 objects) are selected: select exactly two closed paths (a D-form joins two pieces).', document: r.document, pieces: [], units: DF.units.known(r.units), skipped: [] };
@@ -169,7 +169,9 @@
           var key = r.ok ? r.key : 'error:' + r.error;
           if (key !== lastKey) {
             lastKey = key;
-            return refresh();
+            return refresh().then(function (sel) {
+              if (sel.timeout) lastKey = null; // the read itself timed out: read again on the next poll
+            });
           }
           return null;
         })
