@@ -256,3 +256,35 @@ test('test_issue_11_accented_names_in_the_panel: "D\u00e9coupe.ai" with layers "
   assert.deepEqual(errors, [], 'no page errors');
   await page.close();
 });
+
+// Issue 11, item 3: a Large Canvas document's DOM reports lengths divided by Document.scaleFactor (10).
+test('test_issue_11_large_canvas_in_the_panel: perimeters show at their printed size, and holes are written at DOM size', async () => {
+  const { page, host } = await openPanel(panel.browser, panel.url, { ...TWO_SHAPES, scaleFactor: 10 });
+  await waitReady(page);
+  const rows = await page.$$eval('#measure-table tr:not(.diff)', (trs) => trs.map((tr) => [tr.children[1].textContent, tr.children[2].textContent]));
+  for (const [name, shown] of rows) {
+    const it = items(host.snapshot()[0]).find((i) => i.name === name && i.typename === 'PathItem');
+    const want = (10 * lengthOf(it) * 25.4) / 72;
+    assert.ok(Math.abs(parseFloat(shown) - want) <= 0.006, `${name}: wanted ${want.toFixed(2)} mm (10 x the DOM length), shown ${shown}`);
+  }
+  await page.click('#kind button[data-kind="stitch"]');
+  await page.fill('#count', '8');
+  await page.waitForFunction(() => /^8 connectors/.test(document.querySelector('#stats').textContent));
+  await applyOk(page);
+  const hole = items(host.snapshot()[0]).find((i) => i.name === 'hole 1');
+  const c = centroidOfAnchors(hole.points);
+  const dia = Math.max(...hole.points.map((p) => Math.hypot(p.a[0] - c[0], p.a[1] - c[1]))) * 2;
+  assert.ok(Math.abs(10 * dia - 2 * MM) < 0.01 * 2 * MM, `hole diameter printed: wanted ${2 * MM} pt (2 mm), got ${10 * dia} pt (DOM ${dia})`);
+  assert.ok(Math.abs(hole.strokeWidth - 0.0072) < 1e-9, `hairline in the DOM: wanted 0.0072 pt (0.072 pt printed), got ${hole.strokeWidth}`);
+  await page.close();
+});
+
+// Issue 11, item 1: a Select All sends no geometry; the panel asks for two paths.
+test('test_issue_11_select_all_in_the_panel: many selected paths give a clear "select two" state, Apply disabled', async () => {
+  const shapes = Array.from({ length: 40 }, (_, i) => ({ name: `p${i}`, ellipse: { top: 20 * i, left: 0, width: 15, height: 10 } }));
+  const { page } = await openPanel(panel.browser, panel.url, { units: 'mm', shapes });
+  await waitReady(page);
+  assert.match(await page.textContent('#selection-summary'), /More than two paths \(or more than 500 objects\) are selected: select exactly two closed paths/);
+  assert.equal(await page.isDisabled('#apply-btn'), true);
+  await page.close();
+});
