@@ -471,10 +471,11 @@ function dformer_collect(doc) {
 
 /**
  * The core's path JSON for a PathItem, with its anchor selection; coordinates multiplied by `sf`
- * (Document.scaleFactor: real points from a Large Canvas document's DOM values; 1 to copy them).
- * @param {PathItem} p @param {number} sf
+ * (Document.scaleFactor: real points from a Large Canvas document's DOM values; 1 or omitted to copy them).
+ * @param {PathItem} p @param {number} [sf]
  */
 function dformer_readPath(p, sf) {
+  if (sf === undefined) sf = 1;
   var pts = [];
   var selectedAnchors = [];
   var n = p.pathPoints.length;
@@ -604,11 +605,13 @@ function dformer_pair(v, where) {
 
 /**
  * Check a core path and return it normalised ({closed, points:[{anchor,left,right}]}), in DOM units:
- * the panel's real points divided by `sf` (Document.scaleFactor).
- * @param {*} path @param {string} where @param {number} sf
+ * the panel's real points divided by `sf` (Document.scaleFactor; pass dformer_scaleOf(doc): omitted
+ * means 1, right only outside Large Canvas documents).
+ * @param {*} path @param {string} where @param {number} [sf]
  * @returns {{closed: boolean, points: Array<{anchor: Array<number>, left: Array<number>, right: Array<number>}>}}
  */
 function dformer_checkPath(path, where, sf) {
+  if (sf === undefined) sf = 1;
   if (!path || typeof path !== "object" || !dformer_isArray(path.points)) dformer_fail(where + ": expected a path {closed, points:[...]}.");
   if (path.points.length < 2) dformer_fail(where + ": a path needs at least 2 points, got " + path.points.length + ".");
   var out = [];
@@ -832,7 +835,7 @@ function dformer_pointType(q) {
  * coordinates Illustrator stored as 32-bit floats turned smooth points into corners); null derives
  * them (new art).
  * @param {PathItem} p @param {{points: Array<{anchor: Array<number>, left: Array<number>, right: Array<number>}>}} path
- * @param {Array<PointType>|null} types
+ * @param {Array<PointType>|null} [types]
  */
 function dformer_setPoints(p, path, types) {
   for (var i = 0; i < path.points.length; i++) {
