@@ -241,7 +241,7 @@ impl<'input> SvgFile<'input> {
         let root = self.doc.root_element();
         for n in root.descendants().filter(|n| n.is_element() && n.tag_name().namespace() == Some(SVG_NS)) {
             let Some((_, reason)) = NOT_OUTLINES.iter().find(|(t, _)| *t == n.tag_name().name()) else { continue };
-            let hidden = n.ancestors().any(|a| a != n && matches!(a.tag_name().name(), "defs" | "clipPath" | "mask" | "marker" | "pattern" | "symbol" | "text"));
+            let hidden = n.ancestors().any(|a| hidden(a) || (a != n && matches!(a.tag_name().name(), "defs" | "clipPath" | "mask" | "marker" | "pattern" | "symbol" | "text")));
             if hidden || n.attribute("id").is_some_and(|id| id.starts_with(OWN_PREFIX)) {
                 continue;
             }
@@ -271,6 +271,18 @@ impl<'input> SvgFile<'input> {
         walker.walk(root, Ok(Affine::IDENTITY), size);
         out
     }
+}
+
+/// Hidden with `display: none` (an Inkscape layer switched off, an old draft): not drawn, so
+/// neither a piece nor skipped — as the browser app and Inkscape's selection see it.
+fn hidden(n: Node) -> bool {
+    n.attribute("display").is_some_and(|d| d.trim() == "none")
+        || n.attribute("style").is_some_and(|s| {
+            s.split(';').any(|decl| {
+                let mut kv = decl.splitn(2, ':');
+                kv.next().is_some_and(|k| k.trim() == "display") && kv.next().is_some_and(|v| v.trim() == "none")
+            })
+        })
 }
 
 /// A shape found in the tree; `ctm` is the error of an ancestor (a phrase naming it) if one
@@ -317,6 +329,7 @@ impl<'w, 'a, 'input> Walker<'w, 'a, 'input> {
         {
             let tag = child.tag_name().name();
             if NOT_DRAWN.contains(&tag)
+                || hidden(child)
                 || child
                     .attribute("id")
                     .is_some_and(|id| id.starts_with(OWN_PREFIX))
