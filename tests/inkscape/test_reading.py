@@ -124,6 +124,8 @@ class SvgShapeRules(unittest.TestCase):
         self.assertIsNone(svg)
         self.assertEqual(data, b"")
         self.assertIn('#P: attribute width="50%" is a percentage', err)
+        # The extension's own advice in Inkscape's menus, from the one table.
+        self.assertIn("convert it to a path (Path > Object to Path) first", err)
 
 
 class ErrorsNameTheObject(unittest.TestCase):
@@ -139,6 +141,11 @@ class ErrorsNameTheObject(unittest.TestCase):
         self.assertIsNone(svg)
         self.assertEqual(data, b"")
         self.assertIn("#hook is open", err)
+        # Inkscape's own commands, from the one table (the core's words were Illustrator's
+        # "Object > Path > Join" in every host).
+        self.assertIn("Join selected nodes", err)
+        self.assertIn("Path > Combine", err)
+        self.assertNotIn("Object > Path", err)
 
 
     def test_unequal_perimeters_are_given_in_the_users_unit(self):
