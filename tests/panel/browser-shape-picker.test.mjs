@@ -49,8 +49,8 @@ test('Inkscape 0.92 drawing with stray strokes: three closed shapes offered, the
     { name: 'path14', perimeter: mm(STAR), a: false, b: true },
   ]);
   assert.equal(await page.$$eval('#shape-map .cand', (c) => c.length), 3, 'every closed shape is drawn');
-  const open = 'an open path (a stroke): a piece must be a closed outline, so close the path to use it';
-  assert.deepEqual(await skippedItems(page), [`path16: ${open}`, `path9: ${open}`, `path1: ${open}`,
+  const stroke = 'an open path (a stroke): a piece must be a closed outline, so close the path to use it';
+  assert.deepEqual(await skippedItems(page), [`path16: ${stroke}`, `path9: ${stroke}`, `path1: ${stroke}`,
     'text20: text, not an outline: convert it to a path to use it as a piece']);
   // The two longest are preselected, in file order.
   assert.deepEqual(await pieces(page), ['A rect10', 'B path14']);

@@ -64,8 +64,18 @@
       var unit = null;
       var skipped = [];
       var notes = [];
+      var right = null; // several files: each file's shapes right of the previous file's, for the picker's map
       files.forEach(function (file) {
         var parsed = DF.svgImport.parse(file.text, file.name);
+        if (files.length > 1 && parsed.shapes.length) {
+          var left = Math.min.apply(null, parsed.shapes.map(function (s) { return s.measure.bounds.min[0]; }));
+          var dx = right === null ? 0 : right + GAP - left;
+          parsed.shapes.forEach(function (s) {
+            s.path = DF.core.transformPath(s.path, [1, 0, 0, 1, dx, 0]);
+            s.measure = DF.core.measure(s.path);
+          });
+          right = Math.max.apply(null, parsed.shapes.map(function (s) { return s.measure.bounds.max[0]; }));
+        }
         unit = unit || parsed.unit;
         skipped = skipped.concat(parsed.skipped || []);
         notes = notes.concat(parsed.notes || []);
