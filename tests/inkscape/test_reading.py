@@ -137,6 +137,12 @@ class ErrorsNameTheObject(unittest.TestCase):
         _, err, _ = doc.run(Measure, "--id=ok", "--id=bow")
         self.assertIn("#bow crosses itself", err)
         self.assertNotIn("first", err)
+        # A stray open stroke or a bad outline in the selection does not block the others.
+        self.assertIn("#ok: perimeter 160.0000 mm", err)
+        _, err, _ = doc.run(Measure, "--id=ok", "--id=hook")
+        self.assertIn("#ok: perimeter 160.0000 mm", err)
+        self.assertIn("Skipped: #hook is open", err)
+        self.assertEqual(err.count("Join selected nodes"), 1, err)
         svg, err, data = doc.run(Normalize, "--id=ok", "--id=hook")
         self.assertIsNone(svg)
         self.assertEqual(data, b"")
