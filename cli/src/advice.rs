@@ -14,12 +14,22 @@ const TABLE: &str = include_str!("../../messages/commands.json");
 struct Table {
     hosts: Vec<String>,
     advice: Vec<serde_json::Map<String, serde_json::Value>>,
+    /// Why a drawn element is not a piece, by kind (`open`, or the element's tag name).
+    skipped: std::collections::BTreeMap<String, String>,
 }
 
 fn table() -> &'static Table {
     static T: OnceLock<Table> = OnceLock::new();
     // The table is part of the source; a broken one fails the `table_is_complete` test.
-    T.get_or_init(|| serde_json::from_str(TABLE).unwrap_or(Table { hosts: vec!["plain".into()], advice: Vec::new() }))
+    T.get_or_init(|| {
+        serde_json::from_str(TABLE).unwrap_or(Table { hosts: vec!["plain".into()], advice: Vec::new(), skipped: Default::default() })
+    })
+}
+
+/// Why an element of this kind (`open`, `text`, `image`, `use`, `foreignObject`) is skipped;
+/// `None` for a kind that is offered.
+pub fn skipped(kind: &str) -> Option<&'static str> {
+    table().skipped.get(kind).map(String::as_str)
 }
 
 /// `text` with every plain phrase of the table replaced by `host`'s wording. An unknown host
@@ -48,6 +58,9 @@ mod tests {
     #[test]
     fn table_is_complete() {
         let t: Table = serde_json::from_str(TABLE).expect("messages/commands.json is valid JSON");
+        for kind in ["open", "text", "image", "use", "foreignObject"] {
+            assert!(t.skipped.get(kind).is_some_and(|r| !r.is_empty()), "no skipped reason for {kind}");
+        }
         for row in &t.advice {
             for h in &t.hosts {
                 let text = row.get(h).and_then(|v| v.as_str()).unwrap_or("");

@@ -66,7 +66,7 @@ pub fn offer<'a, 'i>(file: &'a SvgFile<'i>) -> (Vec<Offered<'a, 'i>>, Vec<Skippe
                 continue;
             }
             [one] if !one.closed => {
-                skipped.push(skip("an open path (a stroke): a piece must be a closed outline, so close the path to use it".into()));
+                skipped.push(skip(crate::advice::skipped("open").unwrap_or("an open path").into()));
                 continue;
             }
             [one] => map_path(one, to_display * shape.ctm),

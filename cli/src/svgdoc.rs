@@ -38,13 +38,9 @@ const NOT_DRAWN: &[&str] = &[
     "image",
     "text",
 ];
-/// Drawn elements that are not outlines: listed as skipped, with what to do.
-const NOT_OUTLINES: &[(&str, &str)] = &[
-    ("text", "text, not an outline: convert it to a path to use it as a piece"),
-    ("image", "an image, not an outline"),
-    ("use", "a clone (<use>): convert it to a path to use it as a piece"),
-    ("foreignObject", "embedded HTML, not an outline"),
-];
+/// Drawn elements that are not outlines: listed as skipped, with the table's reason
+/// (`messages/commands.json`, the browser app's words too).
+const NOT_OUTLINES: &[&str] = &["text", "image", "use", "foreignObject"];
 const SHAPES: &[&str] = &[
     "path", "rect", "circle", "ellipse", "polygon", "polyline", "line",
 ];
@@ -240,7 +236,8 @@ impl<'input> SvgFile<'input> {
         }
         let root = self.doc.root_element();
         for n in root.descendants().filter(|n| n.is_element() && n.tag_name().namespace() == Some(SVG_NS)) {
-            let Some((_, reason)) = NOT_OUTLINES.iter().find(|(t, _)| *t == n.tag_name().name()) else { continue };
+            let tag = n.tag_name().name();
+            let Some(reason) = NOT_OUTLINES.contains(&tag).then(|| crate::advice::skipped(tag)).flatten() else { continue };
             let hidden = n.ancestors().any(|a| hidden(a) || (a != n && matches!(a.tag_name().name(), "defs" | "clipPath" | "mask" | "marker" | "pattern" | "symbol" | "text")));
             if hidden || n.attribute("id").is_some_and(|id| id.starts_with(OWN_PREFIX)) {
                 continue;

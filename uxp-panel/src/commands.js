@@ -1,8 +1,9 @@
 /* D-former panel: host command names in messages. Every message says what to do in plain words
  * ("close the path"); the one table messages/commands.json (shared with the CLI and the Inkscape
  * extension; build.mjs writes it into wasm/commands-table.js) gives each plain phrase in each
- * host's own words. Each host module picks its column (host-cep.js: Illustrator's menus,
- * host-browser.js: plain words); UI code only calls host.advise(text). */
+ * host's own words, and says why a drawn element is skipped (the CLI's words too). Each host module
+ * picks its column (host-cep.js: Illustrator's menus, host-browser.js: plain words); UI code only
+ * calls host.advise(text). */
 (function (DF) {
   'use strict';
   var TABLE = (typeof self !== 'undefined' && self.DFORMER_COMMANDS) || { hosts: ['plain'], advice: [] };
@@ -16,5 +17,9 @@
     });
     return out;
   }
-  DF.commands = { render: render, hosts: TABLE.hosts.slice() };
+  /** Why a drawn element of this kind ('open', or its tag: 'text', 'image', …) is not offered as a piece. */
+  function skipped(kind) {
+    return (TABLE.skipped && TABLE.skipped[kind]) || (kind === 'open' ? 'an open path' : 'not an outline');
+  }
+  DF.commands = { render: render, skipped: skipped, hosts: TABLE.hosts.slice() };
 })(window.DF = window.DF || {});

@@ -9,14 +9,8 @@
 (function (DF) {
   'use strict';
   var SKIP = { defs: 1, clipPath: 1, mask: 1, symbol: 1, pattern: 1, marker: 1, metadata: 1, title: 1, desc: 1, style: 1, script: 1, namedview: 1 };
-  /** Drawn elements that are not outlines: listed as skipped, with what to do (the CLI's words). */
-  var NOT_OUTLINES = {
-    text: 'text, not an outline: convert it to a path to use it as a piece',
-    image: 'an image, not an outline',
-    use: 'a clone (<use>): convert it to a path to use it as a piece',
-    foreignObject: 'embedded HTML, not an outline',
-  };
-  var OPEN = 'an open path (a stroke): a piece must be a closed outline, so close the path to use it';
+  /** Drawn elements that are not outlines: listed as skipped, with the reason the CLI gives too (messages/commands.json). */
+  var NOT_OUTLINES = { text: 1, image: 1, use: 1, foreignObject: 1 };
   /** Points per CSS unit of SVG lengths (1 px = 1/96 in). */
   var CSS_PT = { px: 0.75, pt: 1, pc: 12, mm: 72 / 25.4, cm: 720 / 25.4, in: 72, '': 0.75 };
 
@@ -325,7 +319,7 @@
         var id = c.getAttribute('id') || '';
         var name = id || label || '<' + c.localName + '>';
         if (NOT_OUTLINES[c.localName]) {
-          skipped.push({ name: name, reason: NOT_OUTLINES[c.localName] });
+          skipped.push({ name: name, reason: DF.commands.skipped(c.localName) });
           continue;
         }
         var cm = mul(m, parseTransform(c.getAttribute('transform')));
@@ -349,7 +343,7 @@
         }
         if (!paths.length) continue;
         if (paths.every(function (p) { return !p.closed; })) {
-          skipped.push({ name: name, reason: OPEN });
+          skipped.push({ name: name, reason: DF.commands.skipped('open') });
           continue;
         }
         // Open strokes inside a compound path draw no area: its closed outlines are what counts.
