@@ -90,6 +90,18 @@ def call_all(requests):
     return answers
 
 
+def advise(text, host="inkscape"):
+    """``text`` naming this host's commands: every plain phrase of the one table
+    (messages/commands.json, compiled into ``dformer``) in Inkscape's words, e.g. "close the path"
+    becomes "close the path (Node tool: ... Join selected nodes ...)". When the core program
+    cannot be run, the plain words stay."""
+    try:
+        answer = run_batch([{"op": "advise", "text": text, "host": host}])[0]
+    except CoreError:
+        return text
+    return answer if isinstance(answer, str) else text
+
+
 def call(op, **args):
     """One contract function, e.g. ``call("measure", path=p)``; raises CoreError on failure."""
     request = dict(args)

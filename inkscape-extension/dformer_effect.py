@@ -12,7 +12,7 @@ import re
 import inkex
 from inkex.units import CONVERSIONS
 
-from dformer_bridge import CoreError
+from dformer_bridge import CoreError, advise
 from dformer_pieces import describe, name_pieces, selected_shapes
 from dformer_viewport import page_px_per_user
 
@@ -92,7 +92,8 @@ class DformerEffect(inkex.EffectExtension):
         """A core message for the student: pieces named by object, and the two perimeters of
         a mismatch (the core gives raw user units) in the user's unit."""
         shapes = getattr(self, "shapes", [])
-        message = name_pieces(message, shapes)
+        # What to do, in Inkscape's menus (the core and this extension say it in plain words).
+        message = name_pieces(advise(message), shapes)
 
         def perimeters(match):
             a, b = (float(v) for v in match.groups())

@@ -96,8 +96,8 @@ def check_editable(elem):
     """Refuses objects whose outline Inkscape regenerates from other data."""
     if elem.get("inkscape:path-effect") or elem.get("inkscape:original-d"):
         raise CoreError(
-            f"{describe(elem)} has a live path effect, so its outline cannot be changed directly. "
-            "Use Path > Object to Path on it first."
+            f"{describe(elem)} has a live path effect, so its outline cannot be changed directly: "
+            "convert it to a path first."
         )
 
 
@@ -152,7 +152,7 @@ def _length_attr(elem, name, default=None):
     if "%" in raw:
         raise CoreError(
             f"{describe(elem)}: attribute {name}=\"{raw}\" is a percentage, which D-former does "
-            "not follow. Use Path > Object to Path on it first."
+            "not follow: convert it to a path first."
         )
     return raw
 

@@ -4,7 +4,7 @@
 
 use crate::laser::{self, Group};
 use crate::splice::{escape, inner_range, tag_prefix, Edits};
-use crate::svgdoc::{Shape, SvgFile, INKSCAPE_NS};
+use crate::svgdoc::{Shape, Skipped, SvgFile, INKSCAPE_NS};
 use dformer::api::{self, connect::ConnectOptionsDto, path::PathDto};
 use kurbo::{Affine, Point};
 use serde_json::{json, Value};
@@ -28,6 +28,136 @@ pub fn map_path(path: &PathDto, a: Affine) -> PathDto {
         p.right = p.right.map(m);
     }
     out
+}
+
+/// How the user chose the pieces: by id (`--id`, in order), the `largest` N closed shapes, or
+/// neither (every closed shape in the file).
+#[derive(Clone, Copy, Default)]
+pub struct Choice<'c> {
+    pub ids: &'c [String],
+    pub largest: Option<usize>,
+}
+
+/// A closed shape that can be a piece: its outline in the display unit and its measures.
+pub struct Offered<'a, 'i> {
+    pub shape: Shape<'a, 'i>,
+    pub path: PathDto,
+    pub measure: api::MeasureDto,
+}
+
+/// Every closed shape of the file that can be a piece, and every other drawn element with why
+/// not (open paths, compound paths, text, images, self-crossing outlines…), in document order.
+pub fn offer<'a, 'i>(file: &'a SvgFile<'i>) -> (Vec<Offered<'a, 'i>>, Vec<Skipped>) {
+    let (shapes, mut skipped) = file.survey();
+    let to_display = to_display(file);
+    let mut offered = Vec::new();
+    for shape in shapes {
+        let skip = |reason: String| Skipped { name: shape.name.clone(), reason, at: shape.node.range().start };
+        let subpaths = match api::svg::path_from_svg(&shape.d) {
+            Ok(p) => p,
+            Err(e) => {
+                skipped.push(skip(e.to_string()));
+                continue;
+            }
+        };
+        let path = match subpaths.as_slice() {
+            [] => {
+                skipped.push(skip("an empty path: it draws nothing".into()));
+                continue;
+            }
+            [one] if !one.closed => {
+                skipped.push(skip(crate::advice::skipped("open").unwrap_or("an open path").into()));
+                continue;
+            }
+            [one] => map_path(one, to_display * shape.ctm),
+            many => {
+                skipped.push(skip(format!(
+                    "a compound path of {} subpaths: a piece must be one outline, so split it into separate shapes",
+                    many.len()
+                )));
+                continue;
+            }
+        };
+        match api::measure(&path, None) {
+            Ok(measure) => offered.push(Offered { shape, path, measure }),
+            Err(e) => skipped.push(skip(e.to_string().replacen("The first path ", "The path ", 1))),
+        }
+    }
+    skipped.sort_by_key(|s| s.at);
+    (offered, skipped)
+}
+
+/// `skipped: NAME: REASON` lines for stderr.
+pub fn skipped_report(skipped: &[Skipped]) -> String {
+    skipped.iter().map(|s| format!("skipped: {}: {}\n", s.name, s.reason)).collect()
+}
+
+/// The pieces the user chose (see [`Choice`]), `min` to `max` of them, with the stderr lines
+/// for what was skipped. Ambiguity is refused: naming every closed shape, and how to choose.
+pub fn choose<'a, 'i>(
+    file: &'a SvgFile<'i>,
+    choice: Choice,
+    min: usize,
+    max: Option<usize>,
+) -> Result<(Vec<Shape<'a, 'i>>, Vec<PathDto>, String), String> {
+    if !choice.ids.is_empty() {
+        if choice.largest.is_some() {
+            return Err("give the pieces with --id or with --largest, not both".into());
+        }
+        let shapes = pick(file, choice.ids, min, max)?;
+        let paths = read(file, &shapes)?;
+        return Ok((shapes, paths, String::new()));
+    }
+    let (mut offered, skipped) = offer(file);
+    let report = skipped_report(&skipped);
+    let names = |o: &[Offered]| o.iter().map(|o| o.shape.name.as_str()).collect::<Vec<_>>().join(", ");
+    let found = |o: &[Offered]| match o.len() {
+        0 => "no closed shape".to_string(),
+        1 => format!("1 closed shape ({})", names(o)),
+        n => format!("{n} closed shapes ({})", names(o)),
+    };
+    let skipped_note = if skipped.is_empty() { String::new() } else { format!("; skipped: {}", skipped.iter().map(|s| format!("{} ({})", s.name, s.reason)).collect::<Vec<_>>().join("; ")) };
+    if let Some(n) = choice.largest {
+        if n < min || max.is_some_and(|m| n > m) {
+            let want = match max {
+                Some(m) if m == min => format!("{min}"),
+                _ => format!("at least {min}"),
+            };
+            return Err(format!("--largest {n}: this command needs {want} pieces"));
+        }
+        if offered.len() < n {
+            return Err(format!("--largest {n}: the file has {}{skipped_note}", found(&offered)));
+        }
+        // Longest perimeter first (ties: larger area, then file order), as the panel preselects;
+        // the chosen pieces stay in file order, so A is the one drawn first. By perimeter, not
+        // area: normalizing to the largest keeps the same two the largest, so
+        // `normalize --largest 2` then `connect --largest 2` picks the same pieces.
+        let mut order: Vec<usize> = (0..offered.len()).collect();
+        order.sort_by(|&i, &j| {
+            let (a, b) = (&offered[i].measure, &offered[j].measure);
+            b.perimeter.total_cmp(&a.perimeter).then(b.area.total_cmp(&a.area)).then(i.cmp(&j))
+        });
+        let mut keep: Vec<usize> = order.into_iter().take(n).collect();
+        keep.sort_unstable();
+        let mut k = 0;
+        offered.retain(|_| {
+            k += 1;
+            keep.contains(&(k - 1))
+        });
+    } else if offered.len() < min || max.is_some_and(|m| offered.len() > m) {
+        let want = match max {
+            Some(m) if m == min => format!("exactly {min}"),
+            _ => format!("at least {min}"),
+        };
+        let how = if offered.len() > min { format!(": choose them with --id (e.g. --id {} --id {}) or take the largest with --largest {min}", offered[0].shape.key, offered[1].shape.key) } else { String::new() };
+        let others = match skipped.len() {
+            0 => String::new(),
+            n => format!(" ({n} other element{} skipped: {}; `dformer measure` says why)", if n == 1 { "" } else { "s" }, skipped.iter().map(|s| s.name.as_str()).collect::<Vec<_>>().join(", ")),
+        };
+        return Err(format!("{want} closed shapes are needed, the file has {}{how}{others}", found(&offered)));
+    }
+    let paths = offered.iter().map(|o| o.path.clone()).collect();
+    Ok((offered.into_iter().map(|o| o.shape).collect(), paths, report))
 }
 
 /// The shapes to work on: those named by `ids` (in that order; only they are read), or every
@@ -112,7 +242,7 @@ fn replace_outline(
         || node.attribute((INKSCAPE_NS, "original-d")).is_some()
     {
         return Err(format!(
-            "{} has a live path effect; convert it with Object to Path first",
+            "{} has a live path effect; convert it to a path first",
             shape.name
         ));
     }
@@ -145,15 +275,30 @@ fn replace_outline(
     Ok(())
 }
 
-/// `dformer measure`: one line (or JSON object) per shape.
-pub fn measure(file: &SvgFile, ids: &[String], as_json: bool) -> Result<String, String> {
-    let shapes = pick(file, ids, 1, None)?;
-    let paths = read(file, &shapes)?;
+/// `dformer measure`: one line (or JSON object) per closed shape on stdout, the skipped ones
+/// with why on stderr. Named with `--id`, every named shape must measure; otherwise it fails
+/// only when the file has no closed shape at all.
+pub fn measure(file: &SvgFile, choice: Choice, as_json: bool) -> Result<(String, String), String> {
+    let (rows, report): (Vec<(String, String, api::MeasureDto)>, String) = if choice.ids.is_empty() && choice.largest.is_none() {
+        let (offered, skipped) = offer(file);
+        if offered.is_empty() {
+            let what = if skipped.is_empty() { "no shape".to_string() } else { format!("no closed shape (skipped: {})", skipped.iter().map(|s| format!("{}: {}", s.name, s.reason)).collect::<Vec<_>>().join("; ")) };
+            return Err(format!("nothing to measure: the file has {what}"));
+        }
+        (offered.into_iter().map(|o| (o.shape.name, o.shape.key, o.measure)).collect(), skipped_report(&skipped))
+    } else {
+        let (shapes, paths, report) = choose(file, choice, 1, None)?;
+        let mut rows = Vec::new();
+        for (s, p) in shapes.into_iter().zip(&paths) {
+            let m = api::measure(p, None).map_err(|e| format!("{}: {e}", s.name))?;
+            rows.push((s.name, s.key, m));
+        }
+        (rows, report)
+    };
     let unit = &file.scale.unit;
-    let mut rows = Vec::new();
+    let mut json_rows = Vec::new();
     let mut text = String::new();
-    for (s, p) in shapes.iter().zip(&paths) {
-        let m = api::measure(p, None).map_err(|e| format!("{}: {e}", s.name))?;
+    for (name, key, m) in rows {
         let (perimeter, area) = (m.perimeter, m.area);
         // The core reports orientation for y-up; SVG user space is y-down.
         let screen = if m.orientation == "ccw" {
@@ -162,28 +307,27 @@ pub fn measure(file: &SvgFile, ids: &[String], as_json: bool) -> Result<String, 
             "counter-clockwise"
         };
         text.push_str(&format!(
-            "{}\tperimeter {perimeter:.6} {unit}\tarea {area:.6} {unit}²\t{screen} on screen\n",
-            s.name
+            "{name}\tperimeter {perimeter:.6} {unit}\tarea {area:.6} {unit}²\t{screen} on screen\n"
         ));
-        rows.push(json!({ "id": s.key, "perimeter": perimeter, "area": area, "unit": unit, "direction": screen }));
+        json_rows.push(json!({ "id": key, "perimeter": perimeter, "area": area, "unit": unit, "direction": screen }));
     }
-    Ok(if as_json {
-        format!("{}\n", Value::Array(rows))
+    let out = if as_json {
+        format!("{}\n", Value::Array(json_rows))
     } else {
         text
-    })
+    };
+    Ok((out, report))
 }
 
 /// `dformer normalize`: every chosen shape scaled to the common perimeter, in place.
 pub fn normalize(
     source: &str,
     file: &SvgFile,
-    ids: &[String],
+    choice: Choice,
     target: &str,
     pivot: &str,
 ) -> Result<(String, String), String> {
-    let shapes = pick(file, ids, 2, None)?;
-    let paths = read(file, &shapes)?;
+    let (shapes, paths, skipped) = choose(file, choice, 2, None)?;
     let target = match target {
         "largest" | "smallest" | "mean" | "first" => json!(target),
         length => json!(file
@@ -198,7 +342,7 @@ pub fn normalize(
     for (s, p) in shapes.iter().zip(&result.paths) {
         replace_outline(source, file, s, p, &mut edits)?;
     }
-    let report = format!(
+    let report = skipped + &format!(
         "{} shapes normalized to perimeter {:.6} {} (scales {})\n",
         shapes.len(),
         result.perimeter,
@@ -261,11 +405,10 @@ pub struct ConnectArgs {
 pub fn connect(
     source: &str,
     file: &SvgFile,
-    ids: &[String],
+    choice: Choice,
     a: &ConnectArgs,
 ) -> Result<(String, String), String> {
-    let shapes = pick(file, ids, 2, Some(2))?;
-    let paths = read(file, &shapes)?;
+    let (shapes, paths, skipped) = choose(file, choice, 2, Some(2))?;
     let len = |name: &str, v: &Option<String>| {
         v.as_deref()
             .map(|t| file.scale.parse(t).map_err(|e| format!("--{name}: {e}")))
@@ -372,7 +515,7 @@ pub fn connect(
         }
     }
     laser::write(source, file.doc.root_element(), &groups, &mut edits)?;
-    let mut report = format!(
+    let mut report = skipped + &format!(
         "{} {} connectors per piece, {:.6} {} apart\n",
         result.count, a.kind, result.pitch, file.scale.unit
     );
@@ -408,7 +551,7 @@ mod tests {
         let opts = Opts::try_parse_from(std::iter::once("connect").chain(args.iter().copied()))
             .map_err(|e| e.to_string())?;
         let file = SvgFile::parse(svg, unit)?;
-        connect(svg, &file, &[], &opts.connect)
+        connect(svg, &file, Choice::default(), &opts.connect)
     }
 
     #[test]

@@ -3,6 +3,7 @@
 //! - `dformer json` speaks the core's JSON API on stdin/stdout (the Inkscape extension's bridge).
 //! - `dformer measure|normalize|connect FILE.svg` work on SVG files directly, for batch use.
 
+mod advice;
 mod batch;
 mod laser;
 mod protocol;
@@ -35,6 +36,10 @@ struct FileArgs {
     /// Shapes to use, by id, in order (repeatable). Default: every shape in the file.
     #[arg(long = "id")]
     ids: Vec<String>,
+    /// Use the N largest closed shapes (longest perimeters, kept in file order), e.g.
+    /// `--largest 2` for connect, instead of naming them with --id.
+    #[arg(long, value_name = "N")]
+    largest: Option<usize>,
     /// Unit of lengths shown and of bare numbers in options: mm, cm, in, pt, pc, px.
     /// Default: the document's display unit (Inkscape's document-units, else the unit of width).
     #[arg(long)]
@@ -55,7 +60,8 @@ enum Command {
     /// normalize, connect, pathFromSvg, pathToSvg, DEFAULT_ACCURACY. Errors: {"error": message}
     /// and exit status 1.
     Json,
-    /// Print the perimeter, area and drawing direction of each shape.
+    /// Print the perimeter, area and drawing direction of each closed shape; what cannot be a
+    /// piece (open paths, text, images…) is listed with why on stderr.
     Measure {
         #[command(flatten)]
         file: FileArgs,
@@ -131,6 +137,12 @@ fn write_output(out: &OutArgs, text: &str) -> Result<(), String> {
     }
 }
 
+impl FileArgs {
+    fn choice(&self) -> batch::Choice<'_> {
+        batch::Choice { ids: &self.ids, largest: self.largest }
+    }
+}
+
 /// Reads and parses the input SVG, then runs `f` on its text and the parsed document.
 fn with_svg<T>(
     file: &FileArgs,
@@ -152,10 +164,9 @@ fn run_svg(command: Command) -> Result<(), String> {
     match command {
         Command::Json => unreachable!("handled in main"),
         Command::Measure { file, json } => {
-            print!(
-                "{}",
-                with_svg(&file, |_, svg| batch::measure(svg, &file.ids, json))?
-            );
+            let (table, skipped) = with_svg(&file, |_, svg| batch::measure(svg, file.choice(), json))?;
+            print!("{table}");
+            eprint!("{skipped}");
             Ok(())
         }
         Command::Normalize {
@@ -166,13 +177,13 @@ fn run_svg(command: Command) -> Result<(), String> {
         } => finish(
             &out,
             with_svg(&file, |source, svg| {
-                batch::normalize(source, svg, &file.ids, &target, &pivot)
+                batch::normalize(source, svg, file.choice(), &target, &pivot)
             })?,
         ),
         Command::Connect { file, out, connect } => finish(
             &out,
             with_svg(&file, |source, svg| {
-                batch::connect(source, svg, &file.ids, &connect)
+                batch::connect(source, svg, file.choice(), &connect)
             })?,
         ),
     }

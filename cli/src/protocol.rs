@@ -10,7 +10,12 @@
 //! {"op": "pathFromSvg", "d": "M 0 0 L 10 0 ..."}
 //! {"op": "pathToSvg", "path": {...}}
 //! {"op": "DEFAULT_ACCURACY"}
+//! {"op": "advise", "text": "… close the path …", "host": "inkscape"}
 //! ```
+//!
+//! Any request may say `"host": "inkscape"` (or `illustrator`, `plain`): its error message then
+//! names that host's commands (`crate::advice`, the table `messages/commands.json`); `advise`
+//! renders a message of the caller's own the same way.
 //!
 //! The answer is the function's result exactly as the WASM build returns it to JavaScript, or
 //! `{"error": "<the core's user-facing message>"}`. A JSON array of requests is answered by an
@@ -30,6 +35,7 @@ pub const OPERATIONS: &[&str] = &[
     "pathFromSvg",
     "pathToSvg",
     "DEFAULT_ACCURACY",
+    "advise",
 ];
 
 /// Reads argument `name` of the request as the DTO the core expects. A missing required
@@ -80,6 +86,8 @@ pub fn call(op: &str, request: &Map<String, Value>) -> Result<Value, Error> {
         "pathFromSvg" => out(api::svg::path_from_svg(&arg::<String>(request, "d")?)?),
         "pathToSvg" => out(api::svg::path_to_svg(&arg(request, "path")?)?),
         "DEFAULT_ACCURACY" => out(dformer::DEFAULT_ACCURACY),
+        "advise" => out(crate::advice::render(&arg::<String>(request, "text")?, &host(request)?)
+            .map_err(|detail| Error::Shape { detail })?),
         other => Err(Error::Shape {
             detail: format!(
                 "unknown operation `{other}`; this build knows: {}",
@@ -89,7 +97,13 @@ pub fn call(op: &str, request: &Map<String, Value>) -> Result<Value, Error> {
     }
 }
 
-/// Answers one request object: the result, or `{"error": message}`.
+/// The request's `host` (default `plain`).
+fn host(request: &Map<String, Value>) -> Result<String, Error> {
+    Ok(arg::<Option<String>>(request, "host")?.unwrap_or_else(|| "plain".into()))
+}
+
+/// Answers one request object: the result, or `{"error": message}` (in the words of the
+/// request's `host`).
 pub fn answer(request: &Value) -> (Value, bool) {
     let Some(object) = request.as_object() else {
         return (
@@ -108,7 +122,11 @@ pub fn answer(request: &Value) -> (Value, bool) {
     };
     match call(op, object) {
         Ok(value) => (value, true),
-        Err(e) => (json!({ "error": e.to_string() }), false),
+        Err(e) => {
+            let text = e.to_string();
+            let text = host(object).ok().and_then(|h| crate::advice::render(&text, &h).ok()).unwrap_or(text);
+            (json!({ "error": text }), false)
+        }
     }
 }
 
@@ -179,6 +197,20 @@ mod tests {
             message.contains("open"),
             "wanted the open-path message second, got {value}"
         );
+    }
+
+    #[test]
+    fn errors_name_the_commands_of_the_host_that_asked() {
+        let open = json!({"closed": false, "points": [{"anchor": [0, 0]}, {"anchor": [1, 0]}]});
+        let (plain, _) = answer(&json!({"op": "measure", "path": open}));
+        let (ink, _) = answer(&json!({"op": "measure", "path": open, "host": "inkscape"}));
+        let plain = plain["error"].as_str().unwrap_or_default().to_string();
+        let ink = ink["error"].as_str().unwrap_or_default().to_string();
+        assert!(plain.contains("close the path and try again") && !plain.contains('('), "got {plain}");
+        assert!(ink.contains("Join selected nodes"), "got {ink}");
+        let (advised, ok) = answer(&json!({"op": "advise", "text": "#t is text: convert it to a path first.", "host": "inkscape"}));
+        assert!(ok, "got {advised}");
+        assert_eq!(advised, json!("#t is text: convert it to a path (Path > Object to Path) first."));
     }
 
     #[test]

@@ -38,6 +38,9 @@ const NOT_DRAWN: &[&str] = &[
     "image",
     "text",
 ];
+/// Drawn elements that are not outlines: listed as skipped, with the table's reason
+/// (`messages/commands.json`, the browser app's words too).
+const NOT_OUTLINES: &[&str] = &["text", "image", "use", "foreignObject"];
 const SHAPES: &[&str] = &[
     "path", "rect", "circle", "ellipse", "polygon", "polyline", "line",
 ];
@@ -54,6 +57,15 @@ pub struct Shape<'a, 'input> {
     pub ctm: Affine,
     /// Path data in local coordinates.
     pub d: String,
+}
+
+/// A drawn element that cannot be a piece, and why (for the "skipped" list).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Skipped {
+    pub name: String,
+    pub reason: String,
+    /// Where it starts in the text (document order).
+    pub at: usize,
 }
 
 /// The parsed SVG text plus what the commands need from the root.
@@ -205,6 +217,38 @@ impl<'input> SvgFile<'input> {
             .collect()
     }
 
+    /// Every drawable shape that can be read, and every drawn element that cannot (unreadable
+    /// shapes with their error, text, images, clones), both in document order: one bad element
+    /// never hides the others.
+    pub fn survey(&self) -> (Vec<Shape<'_, 'input>>, Vec<Skipped>) {
+        let mut skipped: Vec<(usize, Skipped)> = Vec::new();
+        let mut shapes = Vec::new();
+        for f in self.found() {
+            let (at, name) = (f.node.range().start, f.name.clone());
+            match f.load() {
+                Ok(s) => shapes.push(s),
+                Err(e) => {
+                    // The message starts with the shape's name; the list names it already.
+                    let reason = e.strip_prefix(&name).map(|r| r.trim_start_matches([':', ' '])).unwrap_or(&e).to_string();
+                    skipped.push((at, Skipped { name, reason, at }));
+                }
+            }
+        }
+        let root = self.doc.root_element();
+        for n in root.descendants().filter(|n| n.is_element() && n.tag_name().namespace() == Some(SVG_NS)) {
+            let tag = n.tag_name().name();
+            let Some(reason) = NOT_OUTLINES.contains(&tag).then(|| crate::advice::skipped(tag)).flatten() else { continue };
+            let hidden = n.ancestors().any(|a| hidden(a) || (a != n && matches!(a.tag_name().name(), "defs" | "clipPath" | "mask" | "marker" | "pattern" | "symbol" | "text")));
+            if hidden || n.attribute("id").is_some_and(|id| id.starts_with(OWN_PREFIX)) {
+                continue;
+            }
+            let name = n.attribute("id").map_or_else(|| format!("<{}>", n.tag_name().name()), |id| format!("#{id}"));
+            skipped.push((n.range().start, Skipped { name, reason: (*reason).to_string(), at: n.range().start }));
+        }
+        skipped.sort_by_key(|(at, _)| *at);
+        (shapes, skipped.into_iter().map(|(_, s)| s).collect())
+    }
+
     /// Every drawable shape, not yet read: errors in it or its ancestors are kept for `load`.
     fn found(&self) -> Vec<Found<'_, 'input>> {
         let mut out = Vec::new();
@@ -224,6 +268,18 @@ impl<'input> SvgFile<'input> {
         walker.walk(root, Ok(Affine::IDENTITY), size);
         out
     }
+}
+
+/// Hidden with `display: none` (an Inkscape layer switched off, an old draft): not drawn, so
+/// neither a piece nor skipped — as the browser app and Inkscape's selection see it.
+fn hidden(n: Node) -> bool {
+    n.attribute("display").is_some_and(|d| d.trim() == "none")
+        || n.attribute("style").is_some_and(|s| {
+            s.split(';').any(|decl| {
+                let mut kv = decl.splitn(2, ':');
+                kv.next().is_some_and(|k| k.trim() == "display") && kv.next().is_some_and(|v| v.trim() == "none")
+            })
+        })
 }
 
 /// A shape found in the tree; `ctm` is the error of an ancestor (a phrase naming it) if one
@@ -270,15 +326,18 @@ impl<'w, 'a, 'input> Walker<'w, 'a, 'input> {
         {
             let tag = child.tag_name().name();
             if NOT_DRAWN.contains(&tag)
+                || hidden(child)
                 || child
                     .attribute("id")
                     .is_some_and(|id| id.starts_with(OWN_PREFIX))
             {
                 continue;
             }
-            let what = match child.attribute("id") {
-                Some(id) => format!("#{id}"),
-                None => format!("<{tag}> number {}", *self.counter + 1),
+            // As the Inkscape extension names objects: `#id (label)`.
+            let what = match (child.attribute("id"), child.attribute((INKSCAPE_NS, "label"))) {
+                (Some(id), Some(label)) if label != id => format!("#{id} ({label})"),
+                (Some(id), _) => format!("#{id}"),
+                (None, _) => format!("<{tag}> number {}", *self.counter + 1),
             };
             if SHAPES.contains(&tag) {
                 *self.counter += 1;

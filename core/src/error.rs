@@ -1,5 +1,7 @@
 //! The one error type of the core. Every message is written for the person holding the
-//! mouse: it names the piece, the point or the segment, and says what to do.
+//! mouse: it names the piece, the point or the segment, and says what to do — in plain words,
+//! never a host's menu: each host replaces those phrases by its own commands from the one table
+//! `messages/commands.json` (Illustrator's Object > Path > Join, Inkscape's Path > Combine…).
 
 use std::fmt;
 
@@ -68,7 +70,7 @@ impl fmt::Display for Error {
             ),
             Error::OpenPath { piece } => write!(
                 f,
-                "The {} path is open. D-form pieces must be closed outlines: close the path (Object > Path > Join) and try again.",
+                "The {} path is open. D-form pieces must be closed outlines: close the path and try again.",
                 ordinal(*piece)
             ),
             Error::ZeroLength { piece } => write!(f, "The {} path has zero length: all its points are in the same place.", ordinal(*piece)),

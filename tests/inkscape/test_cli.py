@@ -126,13 +126,16 @@ class Batch(unittest.TestCase):
         self.assertEqual(proc.returncode, 0, proc.stderr)
         with open(self.out("n.svg"), encoding="utf-8") as fh:
             self.assertIn('<rect id="r1" width="50%" height="10"/>', fh.read())
-        proc = dformer("measure", path)  # every shape: r1 is read, and named
-        self.assertEqual(proc.returncode, 1)
-        self.assertIn('#r1: attribute width="50%"', proc.stderr)
+        # Every shape: r1 cannot be read, so it is skipped and named with why; r2 and r3 are
+        # measured (r1 used to fail the whole file).
+        proc = dformer("measure", path)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual([l.split("\t")[0] for l in proc.stdout.splitlines()], ["#r2", "#r3"])
+        self.assertIn('skipped: #r1: attribute width="50%"', proc.stderr)
 
     def test_errors_are_messages_with_exit_status_1_and_no_output_file(self):
         cases = [
-            (["connect", os.path.join(DATA, "pieces_mm.svg")], "exactly 2 shapes"),
+            (["connect", os.path.join(DATA, "pieces_mm.svg")], "exactly 2 closed shapes are needed, the file has 3"),
             (["connect", os.path.join(DATA, "pieces_mm.svg"), "--id", "A", "--id", "C"], "Normalize them first"),
             (["normalize", os.path.join(DATA, "pieces_mm.svg"), "--id", "nope"], 'no shape with id "nope"'),
             (["normalize", os.path.join(DATA, "pieces_mm.svg"), "--target", "12furlongs"], "--target"),

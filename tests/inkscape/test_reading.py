@@ -124,6 +124,8 @@ class SvgShapeRules(unittest.TestCase):
         self.assertIsNone(svg)
         self.assertEqual(data, b"")
         self.assertIn('#P: attribute width="50%" is a percentage', err)
+        # The extension's own advice in Inkscape's menus, from the one table.
+        self.assertIn("convert it to a path (Path > Object to Path) first", err)
 
 
 class ErrorsNameTheObject(unittest.TestCase):
@@ -135,10 +137,21 @@ class ErrorsNameTheObject(unittest.TestCase):
         _, err, _ = doc.run(Measure, "--id=ok", "--id=bow")
         self.assertIn("#bow crosses itself", err)
         self.assertNotIn("first", err)
+        # A stray open stroke or a bad outline in the selection does not block the others.
+        self.assertIn("#ok: perimeter 160.0000 mm", err)
+        _, err, _ = doc.run(Measure, "--id=ok", "--id=hook")
+        self.assertIn("#ok: perimeter 160.0000 mm", err)
+        self.assertIn("Skipped: #hook is open", err)
+        self.assertEqual(err.count("Join selected nodes"), 1, err)
         svg, err, data = doc.run(Normalize, "--id=ok", "--id=hook")
         self.assertIsNone(svg)
         self.assertEqual(data, b"")
         self.assertIn("#hook is open", err)
+        # Inkscape's own commands, from the one table (the core's words were Illustrator's
+        # "Object > Path > Join" in every host).
+        self.assertIn("Join selected nodes", err)
+        self.assertIn("Path > Combine", err)
+        self.assertNotIn("Object > Path", err)
 
 
     def test_unequal_perimeters_are_given_in_the_users_unit(self):

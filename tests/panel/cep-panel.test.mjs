@@ -104,6 +104,8 @@ test('an open path in the selection: message shown, Apply disabled, document unt
   const snap = JSON.stringify(host.snapshot());
   const message = await page.textContent('#message');
   assert.match(message, /open/i, `wanted an "open path" message, got "${message}"`);
+  // Illustrator's own menu, from the one table (the core says it in plain words).
+  assert.match(message, /close the path \(Object > Path > Join\)/, message);
   assert.equal(await page.isDisabled('#apply-btn'), true, 'Apply must be disabled');
   await page.click('#apply-btn', { force: true });
   await page.waitForTimeout(200);

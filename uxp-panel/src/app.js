@@ -57,7 +57,11 @@
   /** The design's error with its lengths in the current unit (the core prints points). */
   function errorText(d) {
     if (d && d.pieceCount !== undefined && host && host.kind === 'browser') return browserCountText(d.pieceCount);
-    return d && d.error ? DF.messages.humanize(d.error, fmt) : '';
+    return d && d.error ? advise(DF.messages.humanize(d.error, fmt)) : '';
+  }
+  /** A message in the host's own words (its menus, or plain words in the browser). */
+  function advise(text) {
+    return host && host.advise ? host.advise(text) : text;
   }
   /** The browser has no selection: it asks for a file with two shapes. */
   function browserCountText(n) {
@@ -164,11 +168,14 @@
     if (!selection.ok) text = selection.error;
     else if (!n) text = host.kind === 'browser' ? 'Open two SVG shapes or pick a sample.' : 'No paths selected.';
     else text = n + (n === 1 ? ' path' : ' paths') + (host.kind === 'browser' ? ' loaded' : ' selected') + (selection.document ? ' · ' + selection.document : '');
+    if (selection.candidates && selection.candidates.length) text = selection.candidates.length + (selection.candidates.length === 1 ? ' closed shape' : ' closed shapes') + ' · ' + selection.document;
     if (selection.note) text += ' · ' + selection.note;
-    if (selection.skipped && selection.skipped.length) {
-      text += ' · skipped: ' + selection.skipped.map(function (s) { return s.name + ' (' + s.reason + ')'; }).join('; ');
+    // The picker lists what was skipped, with why; without one the summary says it.
+    if (!selection.candidates && selection.skipped && selection.skipped.length) {
+      text += ' · skipped: ' + selection.skipped.map(function (s) { return s.name + ' (' + advise(s.reason) + ')'; }).join('; ');
     }
     $('#selection-summary').textContent = text;
+    DF.picker.render($('#picker'), selection, { fmt: fmt, advise: advise, choose: function (slot, index) { host.choose(slot, index); } });
     if (ms.length === 2 && ms[0].ok && ms[1].ok) {
       var d = ms[0].m.perimeter - ms[1].m.perimeter;
       var tr2 = document.createElement('tr');
@@ -536,7 +543,7 @@
   }
 
   function showError(e) {
-    setStatus(e && e.message ? e.message : String(e), false);
+    setStatus(advise(e && e.message ? e.message : String(e)), false);
   }
 
   function apply() {

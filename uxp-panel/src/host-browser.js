@@ -1,28 +1,48 @@
 /* D-former panel: the browser host — the ONLY module that touches the browser's files.
  * The "document" is the shapes the user opened (SVG files via DOMParser, see svg-import.js) or a
- * bundled sample set, held in memory in points, y up, laid out side by side. "Apply" updates them
- * (normalized outlines) and downloads the laser-ready SVG. Same host interface as host-cep.js. */
+ * bundled sample set, held in memory in points, y up. Every closed shape is a candidate; the user
+ * picks pieces A and B among them (the two with the longest perimeters preselected, as the CLI's
+ * `--largest 2`), and they are laid out side by side. "Apply" updates them (normalized outlines) and
+ * downloads the laser-ready SVG. Same host interface as host-cep.js, plus `choose` and the
+ * selection's `candidates`. Messages name no menu: plain words from the commands table. */
 (function (DF) {
   'use strict';
   var GAP = 10 * (72 / 25.4); // 10 mm between pieces
 
   function createBrowserHost(win) {
     var listener = null;
-    var state = { document: 'No file', unit: 'mm', shapes: [], skipped: [], note: '' };
+    // candidates: every closed shape [{ name, id, label, file, path, measure }]; chosen: the
+    // candidates' indices of pieces A and B.
+    var state = { document: 'No file', unit: 'mm', candidates: [], chosen: [], skipped: [], note: '' };
+    var placed = []; // translation of each chosen piece in the side-by-side layout
     var chosenUnit = null; // set by setUnit: the user's choice wins over each file's unit
     var media = win.matchMedia ? win.matchMedia('(prefers-color-scheme: dark)') : null;
 
     function selection() {
+      var chosen = state.chosen.map(function (k) { return state.candidates[k]; });
+      var laid = layout(chosen);
+      placed = laid.map(function (l) { return l.shift; });
       return {
         ok: true,
         document: state.document,
         units: state.unit,
-        pieces: state.shapes.map(function (s, i) {
-          return { id: 'shape:' + i, name: s.name, path: s.path, selectedAnchors: [], allSelected: true };
+        pieces: laid.map(function (s, i) {
+          return { id: 'shape:' + state.chosen[i], name: s.name, path: s.path, selectedAnchors: [], allSelected: true };
+        }),
+        candidates: state.candidates.map(function (c, k) {
+          return { index: k, name: c.name, id: c.id, label: c.label, file: c.file, path: c.path, perimeter: c.measure.perimeter, piece: ['A', 'B'][state.chosen.indexOf(k)] || '' };
         }),
         skipped: state.skipped,
         note: state.note,
       };
+    }
+    /** Indices of the `n` candidates with the longest perimeters (ties: larger area, file order), in file order. */
+    function largest(candidates, n) {
+      return candidates.map(function (c, k) { return k; }).sort(function (i, j) {
+        var a = candidates[i].measure;
+        var b = candidates[j].measure;
+        return b.perimeter - a.perimeter || b.area - a.area || i - j;
+      }).slice(0, n).sort(function (i, j) { return i - j; });
     }
     function emit() {
       if (listener) listener.selection(selection());
@@ -31,26 +51,31 @@
     function layout(shapes) {
       var x = 0;
       return shapes.map(function (s) {
-        var b;
-        try {
-          b = DF.core.measure(s.path).bounds;
-        } catch (e) {
-          // Name the file and the shape: measuring one path, the core calls it "the first path".
-          throw new Error(s.file + ', shape “' + s.name + '”: ' + e.message.replace(/^The first path /, 'The path '));
-        }
-        var moved = DF.core.transformPath(s.path, [1, 0, 0, 1, x - b.min[0], -b.max[1]]);
+        var b = s.measure.bounds;
+        var shift = [x - b.min[0], -b.max[1]];
+        var moved = DF.core.transformPath(s.path, [1, 0, 0, 1, shift[0], shift[1]]);
         x += b.max[0] - b.min[0] + GAP;
-        return { name: s.name, path: moved };
+        return { name: s.name, path: moved, shift: shift };
       });
     }
-    /** Uses parsed files: the first two shapes (in file order) become pieces A and B. */
+    /** Uses parsed files: every closed shape is a candidate, the two largest become pieces A and B. */
     function useFiles(files) {
       var shapes = [];
       var unit = null;
       var skipped = [];
       var notes = [];
+      var right = null; // several files: each file's shapes right of the previous file's, for the picker's map
       files.forEach(function (file) {
         var parsed = DF.svgImport.parse(file.text, file.name);
+        if (files.length > 1 && parsed.shapes.length) {
+          var left = Math.min.apply(null, parsed.shapes.map(function (s) { return s.measure.bounds.min[0]; }));
+          var dx = right === null ? 0 : right + GAP - left;
+          parsed.shapes.forEach(function (s) {
+            s.path = DF.core.transformPath(s.path, [1, 0, 0, 1, dx, 0]);
+            s.measure = DF.core.measure(s.path);
+          });
+          right = Math.max.apply(null, parsed.shapes.map(function (s) { return s.measure.bounds.max[0]; }));
+        }
         unit = unit || parsed.unit;
         skipped = skipped.concat(parsed.skipped || []);
         notes = notes.concat(parsed.notes || []);
@@ -58,16 +83,15 @@
         parsed.shapes.forEach(function (s) {
           // One shape per file: the file's name says it; several: the shape's own id.
           var name = parsed.shapes.length === 1 && files.length > 1 ? base : s.name;
-          shapes.push({ name: name, path: s.path, file: file.name });
+          shapes.push({ name: name, id: s.id, label: s.label, path: s.path, measure: s.measure, file: file.name });
         });
       });
-      var used = layout(shapes.slice(0, 2));
       // Everything read without error: only now replace the loaded design (a failed open keeps it).
-      state.skipped = skipped.concat(shapes.slice(2).map(function (s) {
-        return { name: s.name, reason: 'only the first two shapes are used' };
-      }));
-      state.note = (shapes.length > 2 ? [shapes.length + ' shapes found; using the first two.'] : []).concat(notes).join(' ');
-      state.shapes = used;
+      // A new file resets the choice.
+      state.candidates = shapes;
+      state.chosen = largest(shapes, 2);
+      state.skipped = skipped;
+      state.note = notes.join(' ');
       state.unit = chosenUnit || unit || 'mm';
       state.document = files.map(function (f) { return f.name; }).join(' + ');
       emit();
@@ -137,6 +161,19 @@
         emit();
         return Promise.resolve();
       },
+      /** Makes candidate `index` piece `slot` (0 = A, 1 = B); the shape it replaces there moves to the other slot if it held this one. */
+      choose: function (slot, index) {
+        if (!(slot === 0 || slot === 1) || !state.candidates[index] || state.candidates.length < 2) return;
+        var other = state.chosen.indexOf(index);
+        if (other === slot) return;
+        if (other >= 0) state.chosen[other] = state.chosen[slot];
+        state.chosen[slot] = index;
+        emit();
+      },
+      /** A message in this host's words: plain, no menu of any editor (messages/commands.json). */
+      advise: function (text) {
+        return DF.commands.render(text, 'plain');
+      },
       /** Saves a text file (3D exports): a download. */
       saveText: function (name, text, type) {
         download(name, text, type);
@@ -145,8 +182,13 @@
       /** Writes the normalized outlines back into the loaded shapes and downloads the laser SVG. */
       apply: function (plan) {
         plan.updates.forEach(function (u) {
-          var i = Number(u.id.split(':')[1]);
-          if (state.shapes[i]) state.shapes[i].path = u.path;
+          var k = Number(u.id.split(':')[1]);
+          var slot = state.chosen.indexOf(k);
+          if (!state.candidates[k] || slot < 0) return;
+          // Back from the side-by-side layout to where the shape is in the file.
+          var path = DF.core.transformPath(u.path, [1, 0, 0, 1, -placed[slot][0], -placed[slot][1]]);
+          state.candidates[k].path = path;
+          state.candidates[k].measure = DF.core.measure(path);
         });
         var text = DF.svgExport.laserSvg(plan.design, plan.layers, plan.labelSize, state.unit);
         download('d-former-laser.svg', text);

@@ -194,6 +194,10 @@
     return {
       kind: 'cep',
       capabilities: { document: true, openFiles: false, samples: false, download: false },
+      /** A message in Illustrator's words: its menus for what to do (messages/commands.json). */
+      advise: function (text) {
+        return DF.commands.render(text, 'illustrator');
+      },
       start: function (l) {
         listener = l;
         started = true;

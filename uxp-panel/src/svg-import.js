@@ -8,7 +8,9 @@
  * points to control points, so the mapping is exact. */
 (function (DF) {
   'use strict';
-  var SKIP = { defs: 1, clipPath: 1, mask: 1, symbol: 1, pattern: 1, marker: 1, metadata: 1, title: 1, desc: 1 };
+  var SKIP = { defs: 1, clipPath: 1, mask: 1, symbol: 1, pattern: 1, marker: 1, metadata: 1, title: 1, desc: 1, style: 1, script: 1, namedview: 1 };
+  /** Drawn elements that are not outlines: listed as skipped, with the reason the CLI gives too (messages/commands.json). */
+  var NOT_OUTLINES = { text: 1, image: 1, use: 1, foreignObject: 1 };
   /** Points per CSS unit of SVG lengths (1 px = 1/96 in). */
   var CSS_PT = { px: 0.75, pt: 1, pc: 12, mm: 72 / 25.4, cm: 720 / 25.4, in: 72, '': 0.75 };
 
@@ -89,13 +91,14 @@
     if (tag === 'rect') return rectD(el);
     if (tag === 'circle') return ellipseD(num(el, 'cx'), num(el, 'cy'), num(el, 'r'), num(el, 'r'));
     if (tag === 'ellipse') return ellipseD(num(el, 'cx'), num(el, 'cy'), num(el, 'rx'), num(el, 'ry'));
+    if (tag === 'line') return ['M', f(num(el, 'x1')), f(num(el, 'y1')), 'L', f(num(el, 'x2')), f(num(el, 'y2'))].join(' ');
     if (tag === 'polygon' || tag === 'polyline') {
       var v = (el.getAttribute('points') || '').trim().split(/[\s,]+/).map(Number);
       var n = v.length - (v.length % 2); // an odd last number is ignored, as SVG does
       if (n < 4) return '';
       // A polyline is closed only when it comes back to its first point (SVG draws no closing
-      // segment); that last point is then the first one again. An open one stays open: the core
-      // refuses it with its "path is open" message.
+      // segment); that last point is then the first one again. An open one stays open: it is
+      // listed as skipped, an open path.
       var closed = tag === 'polygon' || (v[n - 2] === v[0] && v[n - 1] === v[1]);
       if (tag === 'polyline' && closed) n -= 2;
       var d = 'M ' + f(v[0]) + ' ' + f(v[1]);
@@ -290,11 +293,14 @@
   }
 
   /**
-   * Parses SVG text → { unit, shapes: [{ name, path }], skipped: [{ name, reason }], notes: [text] }
-   * (document points, y up), in document order. A compound path (several sub-paths in one `d`) is
-   * one shape: its outer outline, its holes ignored (said in `notes`); one of separate outlines
-   * side by side has no outline to use and is skipped. Throws an Error naming the file when it is
-   * not SVG or holds no shape.
+   * Parses SVG text → { unit, shapes: [{ name, id, label, path, measure }], skipped: [{ name, reason }],
+   * notes: [text] } (document points, y up), in document order. `shapes` are the closed outlines
+   * that can be pieces, each measured by the core; everything else drawn is in `skipped` with why
+   * (open paths, text, images, clones, outlines the core refuses such as self-crossing ones), so one
+   * stray stroke never blocks the file. A compound path (several sub-paths in one `d`) is one shape:
+   * its outer outline, its holes ignored (said in `notes`); one of separate outlines side by side has
+   * no outline to use and is skipped. Throws an Error naming the file when it is not SVG or holds no
+   * closed shape at all (naming what was skipped).
    */
   function parse(text, fileName) {
     var doc = new DOMParser().parseFromString(text, 'image/svg+xml');
@@ -309,6 +315,13 @@
     (function walk(el, m, size) {
       for (var c = el.firstElementChild; c; c = c.nextElementSibling) {
         if (SKIP[c.localName] || hidden(c)) continue;
+        var label = c.getAttribute('inkscape:label') || '';
+        var id = c.getAttribute('id') || '';
+        var name = id || label || '<' + c.localName + '>';
+        if (NOT_OUTLINES[c.localName]) {
+          skipped.push({ name: name, reason: DF.commands.skipped(c.localName) });
+          continue;
+        }
         var cm = mul(m, parseTransform(c.getAttribute('transform')));
         var d = shapeD(c);
         if (d === null && c.localName === 'svg') {
@@ -321,22 +334,41 @@
           continue;
         }
         if (!d.trim()) continue;
-        var label = c.getAttribute('id') || c.getAttribute('inkscape:label') || '<' + c.localName + '>';
-        var paths = DF.core.pathFromSvg(d).map(function (p) { return DF.core.transformPath(p, cm); });
+        var paths;
+        try {
+          paths = DF.core.pathFromSvg(d).map(function (p) { return DF.core.transformPath(p, cm); });
+        } catch (e) {
+          skipped.push({ name: name, reason: e.message });
+          continue;
+        }
         if (!paths.length) continue;
+        if (paths.every(function (p) { return !p.closed; })) {
+          skipped.push({ name: name, reason: DF.commands.skipped('open') });
+          continue;
+        }
+        // Open strokes inside a compound path draw no area: its closed outlines are what counts.
+        paths = paths.filter(function (p) { return p.closed; });
         var outer = paths.length > 1 ? outerIndex(paths) : 0;
         if (outer < 0) {
-          skipped.push({ name: label, reason: 'a compound path of ' + paths.length + ' separate outlines in ' + fileName + ': split it into separate shapes (Inkscape: Path › Break Apart; Illustrator: Object › Compound Path › Release)' });
+          skipped.push({ name: name, reason: 'a compound path of ' + paths.length + ' separate outlines: split it into separate shapes' });
+          continue;
+        }
+        var measure;
+        try {
+          measure = DF.core.measure(paths[outer]);
+        } catch (e) {
+          // Measuring one path, the core calls it "the first path".
+          skipped.push({ name: name, reason: e.message.replace(/^The first path /, 'The path ') });
           continue;
         }
         if (paths.length > 1) {
           var holes = paths.length - 1;
-          notes.push('“' + label + '” is a compound path: its outer outline is used, ' + (holes === 1 ? 'its hole is' : 'its ' + holes + ' holes are') + ' ignored.');
+          notes.push('“' + name + '” is a compound path: its outer outline is used, ' + (holes === 1 ? 'its hole is' : 'its ' + holes + ' holes are') + ' ignored.');
         }
-        shapes.push({ name: label, path: paths[outer] });
+        shapes.push({ name: name, id: id, label: label, path: paths[outer], measure: measure });
       }
     })(svg, root, rootSize(svg));
-    if (!shapes.length && skipped.length) throw new Error(fileName + ': no shape to use (skipped: ' + skipped.map(function (s) { return s.name + ', ' + s.reason; }).join('; ') + ').');
+    if (!shapes.length && skipped.length) throw new Error(fileName + ': no closed shape to use (skipped: ' + skipped.map(function (s) { return s.name + ', ' + s.reason; }).join('; ') + ').');
     if (!shapes.length) throw new Error(fileName + ' has no <path>, <rect>, <circle>, <ellipse>, <polygon> or <polyline> to use.');
     return { unit: fileUnit(svg), shapes: shapes, skipped: skipped, notes: notes };
   }
