@@ -32,9 +32,10 @@ pub struct FormArgs {
     /// the largest and the tallest marked; with -o plot.svg, draw it.
     #[arg(long)]
     pub sweep: Option<usize>,
-    /// Output: .stl or .obj (the mesh, in mm) or .svg (a picture of the form; with --sweep the plot).
+    /// Output: .stl or .obj (the mesh, in mm) or .svg (a picture of the form; with --sweep the
+    /// plot). Repeatable: `-o form.stl -o form.svg` writes both from one solve.
     #[arg(short, long)]
-    pub output: Option<PathBuf>,
+    pub output: Vec<PathBuf>,
     /// One JSON object instead of text.
     #[arg(long)]
     pub json: bool,
@@ -117,13 +118,11 @@ pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<String, Strin
     if let Some(n) = a.sweep {
         return sweep(file, ids, a, n);
     }
-    let out_kind = match &a.output {
-        Some(path) => match extension(path).as_str() {
-            kind @ ("stl" | "obj" | "svg") => Some(kind.to_string()),
-            _ => return Err(format!("-o {}: write .stl, .obj (the mesh, in mm) or .svg (a picture)", path.display())),
-        },
-        None => None,
-    };
+    for path in &a.output {
+        if !matches!(extension(path).as_str(), "stl" | "obj" | "svg") {
+            return Err(format!("-o {}: write .stl, .obj (the mesh, in mm) or .svg (a picture)", path.display()));
+        }
+    }
     let p = pieces(file, ids)?;
     let offset = parse_offset(file, &a.offset, p.perimeter)?;
     let (sim, f) = solve(&p, offset, a)?;
@@ -153,7 +152,10 @@ pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<String, Strin
         );
         t
     };
-    if let (Some(path), Some(kind)) = (&a.output, out_kind) {
+    // Everything computed first, then written.
+    let mut files = Vec::new();
+    for path in &a.output {
+        let kind = extension(path);
         let body = match kind.as_str() {
             "stl" => meshfile::stl(&sim, p.mm),
             "obj" => meshfile::obj(&sim, p.mm),
@@ -166,6 +168,9 @@ pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<String, Strin
                 render::render(&sim, &View::of_axes(f.axes), u, &caption)
             }
         };
+        files.push((path, body, kind));
+    }
+    for (path, body, kind) in files {
         write(path, &body)?;
         eprintln!("wrote {}{}", path.display(), if kind == "svg" { "" } else { " (mm)" });
     }
@@ -177,10 +182,8 @@ fn sweep(file: &SvgFile, ids: &[String], a: &FormArgs, n: usize) -> Result<Strin
     if !(2..=4096).contains(&n) {
         return Err(format!("--sweep: wanted a number of offsets from 2 to 4096, got {n}"));
     }
-    if let Some(path) = &a.output {
-        if extension(path) != "svg" {
-            return Err(format!("-o {}: with --sweep, -o writes the plot as .svg", path.display()));
-        }
+    if let Some(path) = a.output.iter().find(|p| extension(p) != "svg") {
+        return Err(format!("-o {}: with --sweep, -o writes the plot as .svg", path.display()));
     }
     let p = pieces(file, ids)?;
     let mut rows = Vec::with_capacity(n);
@@ -219,7 +222,7 @@ fn sweep(file: &SvgFile, ids: &[String], a: &FormArgs, n: usize) -> Result<Strin
         }
         t
     };
-    if let Some(path) = &a.output {
+    for path in &a.output {
         let title = format!("Volume and height along the seam ({n} offsets, perimeter {} {u})", g(p.perimeter));
         write(path, &plot::plot(&rows, u, &title))?;
         eprintln!("wrote {}", path.display());

@@ -217,8 +217,11 @@ fn meshes_are_written_in_mm_whatever_the_document_unit() {
     let stl = out_path("px.stl");
     let j = json_of(&["form", svg.to_str().unwrap(), "--offset", "25%", "--resolution", "48", "--json"]);
     assert_eq!(j["unit"], "px");
-    let (code, _, err) = dformer(&["form", svg.to_str().unwrap(), "--offset", "25%", "--resolution", "48", "-o", stl.to_str().unwrap()]);
+    // One solve, two files (as scripts/demo.sh writes them).
+    let pic = out_path("px.svg");
+    let (code, _, err) = dformer(&["form", svg.to_str().unwrap(), "--offset", "25%", "--resolution", "48", "-o", stl.to_str().unwrap(), "-o", pic.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
+    assert!(roxmltree::Document::parse(&std::fs::read_to_string(&pic).unwrap()).is_ok(), "the picture beside the STL");
     let text = std::fs::read_to_string(&stl).unwrap();
     let pts: Vec<[f64; 3]> = text.lines().filter_map(|l| l.trim().strip_prefix("vertex ")).map(|l| {
         let x: Vec<f64> = l.split_whitespace().map(|s| s.parse().unwrap()).collect();
