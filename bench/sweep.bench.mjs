@@ -7,11 +7,12 @@
 // curve's shape first shows).
 // Run: node bench/sweep.bench.mjs   (DFORMER_PKG overrides the package path)
 import { createRequire } from 'node:module';
+import { readFileSync } from 'node:fs';
+import { runInThisContext } from 'node:vm';
 const require = createRequire(import.meta.url);
 const m = require(process.env.DFORMER_PKG ?? '../core/pkg/dformer.js');
-globalThis.window = globalThis; // sweep-point.js and sweep.js are classic panel scripts
-require('../uxp-panel/src/sweep-point.js');
-require('../uxp-panel/src/sweep.js');
+globalThis.window = globalThis; // sweep-point.js and sweep.js are the panel's classic scripts
+for (const f of ['sweep-point.js', 'sweep.js']) runInThisContext(readFileSync(new URL(`../uxp-panel/src/${f}`, import.meta.url), 'utf8'));
 const { sweepPoint, sweep } = globalThis.DF;
 
 const K = 0.5522847498307936;
