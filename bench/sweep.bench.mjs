@@ -9,23 +9,19 @@
 import { createRequire } from 'node:module';
 import { readFileSync } from 'node:fs';
 import { runInThisContext } from 'node:vm';
+import { ellipse } from '../tests/core/reference.mjs';
 const require = createRequire(import.meta.url);
 const m = require(process.env.DFORMER_PKG ?? '../core/pkg/dformer.js');
 globalThis.window = globalThis; // sweep-point.js and sweep.js are the panel's classic scripts
 for (const f of ['sweep-point.js', 'sweep.js']) runInThisContext(readFileSync(new URL(`../uxp-panel/src/${f}`, import.meta.url), 'utf8'));
 const { sweepPoint, sweep } = globalThis.DF;
 
-const K = 0.5522847498307936;
-const ellipse = (rx, ry, s = 1) => ({
-  closed: true,
-  points: [[1, 0], [0, 1], [-1, 0], [0, -1]].map(([x, y]) => {
-    const a = [s * rx * x, s * ry * y], t = [-y * rx * K * s, x * ry * K * s];
-    return { anchor: a, left: [a[0] - t[0], a[1] - t[1]], right: [a[0] + t[0], a[1] + t[1]] };
-  }),
-});
-const e = ellipse(2, 1);
+// The bench pairs of bench/simulate.bench.mjs: a 2:1 ellipse (four cubic arcs) twice, and with the
+// circle of the same perimeter.
+const e = ellipse([0, 0], 2, 1);
 const P = m.measure(e).perimeter;
-const circle = ellipse(1, 1, P / m.measure(ellipse(1, 1)).perimeter);
+const r = P / m.measure(ellipse([0, 0], 1, 1)).perimeter;
+const circle = ellipse([0, 0], r, r);
 const median = (v) => [...v].sort((a, b) => a - b)[v.length >> 1];
 
 function run(name, pieces, benchOffset) {

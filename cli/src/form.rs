@@ -112,8 +112,8 @@ fn g(x: f64) -> String {
     }
 }
 
-/// `dformer form`: text (or JSON) on stdout; the file named by `-o` written after every solve
-/// succeeded. Returns the text to print.
+/// `dformer form`: text (or JSON) on stdout, then the files named by `-o`, written once every
+/// solve succeeded. Returns what is left to print (nothing).
 pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<String, String> {
     if let Some(n) = a.sweep {
         return sweep(file, ids, a, n);
@@ -170,11 +170,14 @@ pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<String, Strin
         };
         files.push((path, body, kind));
     }
+    // The figures first, then what was written.
+    print!("{text}");
+    std::io::Write::flush(&mut std::io::stdout()).map_err(|e| format!("could not write stdout: {e}"))?;
     for (path, body, kind) in files {
         write(path, &body)?;
         eprintln!("wrote {}{}", path.display(), if kind == "svg" { "" } else { " (mm)" });
     }
-    Ok(text)
+    Ok(String::new())
 }
 
 /// The N offsets k·P/N, each solved cold (so each row is exactly `simulate` at that offset).
@@ -222,10 +225,12 @@ fn sweep(file: &SvgFile, ids: &[String], a: &FormArgs, n: usize) -> Result<Strin
         }
         t
     };
+    print!("{text}");
+    std::io::Write::flush(&mut std::io::stdout()).map_err(|e| format!("could not write stdout: {e}"))?;
     for path in &a.output {
         let title = format!("Volume and height along the seam ({n} offsets, perimeter {} {u})", g(p.perimeter));
         write(path, &plot::plot(&rows, u, &title))?;
         eprintln!("wrote {}", path.display());
     }
-    Ok(text)
+    Ok(String::new())
 }

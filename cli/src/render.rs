@@ -61,13 +61,14 @@ impl View {
         let toward = unit(mix(mix(d, az.cos(), w, az.sin()), el.cos(), h, el.sin()));
         let up = unit(mix(h, 1.0, toward, -dot(h, toward)));
         let right = cross(up, toward);
-        let light = unit(mix(mix(right, -0.45, up, 0.6), 1.0, toward, 0.66));
+        // From the upper left, a little in front: every face the viewer sees gets some light.
+        let light = unit(mix(mix(right, -0.3, up, 0.45), 1.0, toward, 0.85));
         View { toward, right, up, light }
     }
 
-    /// Lambert factor of a face with unit normal `n`: 0.3 ambient + 0.7 diffuse.
+    /// Lambert factor of a face with unit normal `n`: 0.35 ambient + 0.65 diffuse.
     pub fn shade(&self, n: V) -> f64 {
-        0.3 + 0.7 * dot(n, self.light).max(0.0)
+        0.35 + 0.65 * dot(n, self.light).max(0.0)
     }
 }
 

@@ -146,7 +146,7 @@ fn picture_has_one_polygon_per_front_face_far_to_near_flat_shaded_and_the_seam()
     sorted_want.sort();
     assert_eq!(sorted_got, sorted_want, "the drawn faces are not the front faces");
 
-    // Shading: Lambert 0.3 + 0.7 max(0, n·light) on the piece's colour (A warm, B cool), ±1 for rounding.
+    // Shading: Lambert 0.35 + 0.65 max(0, n·light) on the piece's colour (A warm, B cool), ±1 for rounding.
     // The OBJ lists faces piece by piece and simulate's triangles come A's first, so OBJ face k is
     // triangle k (`data-t`); were it not, the projection check below would fail.
     let piece_b: std::collections::HashSet<usize> = {
@@ -175,7 +175,7 @@ fn picture_has_one_polygon_per_front_face_far_to_near_flat_shaded_and_the_seam()
         assert_eq!(pts.len(), 3);
         let t = p.attribute("data-t").unwrap().parse::<usize>().unwrap();
         let base = if piece_b.contains(&t) { [128.0, 166.0, 214.0] } else { [222.0, 170.0, 110.0] };
-        let k = 0.3 + 0.7 * dot(normal(f[t]), light).max(0.0);
+        let k = 0.35 + 0.65 * dot(normal(f[t]), light).max(0.0);
         let fill = rgb(p.attribute("fill").unwrap());
         for c in 0..3 {
             assert!((fill[c] - base[c] * k).abs() <= 1.0, "triangle {t}: fill {fill:?}, wanted {:?}", base.map(|x| x * k));
@@ -218,7 +218,7 @@ fn meshes_are_written_in_mm_whatever_the_document_unit() {
     let j = json_of(&["form", svg.to_str().unwrap(), "--offset", "25%", "--resolution", "48", "--json"]);
     assert_eq!(j["unit"], "px");
     // One solve, two files (as scripts/demo.sh writes them).
-    let pic = out_path("px.svg");
+    let pic = out_path("px-picture.svg");
     let (code, _, err) = dformer(&["form", svg.to_str().unwrap(), "--offset", "25%", "--resolution", "48", "-o", stl.to_str().unwrap(), "-o", pic.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
     assert!(roxmltree::Document::parse(&std::fs::read_to_string(&pic).unwrap()).is_ok(), "the picture beside the STL");
