@@ -546,6 +546,7 @@
   }
   function showView(which) {
     view = which;
+    document.body.dataset.view = which; // a docked panel gives the 3D tab more height (panel.css)
     $$('.tabs button').forEach(function (b) {
       var on = b.dataset.view === which;
       b.classList.toggle('selected', on);
