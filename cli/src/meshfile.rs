@@ -1,26 +1,15 @@
 //! The solved form as a mesh file, in millimetres (as the panel exports it): STL has no unit and
 //! slicers read mm; OBJ has none either and CAD/CAM tools assume mm (the header says so).
 
+use crate::render::face_normal;
 use dformer::api::simulate::SimulateDto;
-
-fn normal(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> [f64; 3] {
-    let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-    let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-    let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
-    let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-    if l > 0.0 {
-        n.map(|x| x / l)
-    } else {
-        [0.0; 3]
-    }
-}
 
 /// ASCII STL, vertices scaled by `mm` (millimetres per unit of the form).
 pub fn stl(form: &SimulateDto, mm: f64) -> String {
     let mut out = String::from("solid d-form\n");
     for t in &form.triangles {
         let [a, b, c] = t.map(|i| form.vertices[i].map(|x| x * mm));
-        let n = normal(a, b, c);
+        let n = face_normal(&form.vertices, *t); // a uniform scale keeps the direction
         out.push_str(&format!(" facet normal {:e} {:e} {:e}\n  outer loop\n", n[0], n[1], n[2]));
         for p in [a, b, c] {
             out.push_str(&format!("   vertex {:e} {:e} {:e}\n", p[0], p[1], p[2]));
