@@ -113,8 +113,8 @@ fn g(x: f64) -> String {
 }
 
 /// `dformer form`: text (or JSON) on stdout, then the files named by `-o`, written once every
-/// solve succeeded. Returns what is left to print (nothing).
-pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<String, String> {
+/// solve succeeded.
+pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<(), String> {
     if let Some(n) = a.sweep {
         return sweep(file, ids, a, n);
     }
@@ -177,11 +177,11 @@ pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<String, Strin
         write(path, &body)?;
         eprintln!("wrote {}{}", path.display(), if kind == "svg" { "" } else { " (mm)" });
     }
-    Ok(String::new())
+    Ok(())
 }
 
 /// The N offsets k·P/N, each solved cold (so each row is exactly `simulate` at that offset).
-fn sweep(file: &SvgFile, ids: &[String], a: &FormArgs, n: usize) -> Result<String, String> {
+fn sweep(file: &SvgFile, ids: &[String], a: &FormArgs, n: usize) -> Result<(), String> {
     if !(2..=4096).contains(&n) {
         return Err(format!("--sweep: wanted a number of offsets from 2 to 4096, got {n}"));
     }
@@ -232,5 +232,5 @@ fn sweep(file: &SvgFile, ids: &[String], a: &FormArgs, n: usize) -> Result<Strin
         write(path, &plot::plot(&rows, u, &title))?;
         eprintln!("wrote {}", path.display());
     }
-    Ok(String::new())
+    Ok(())
 }

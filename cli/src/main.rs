@@ -183,10 +183,7 @@ fn run_svg(command: Command) -> Result<(), String> {
                 batch::normalize(source, svg, &file.ids, &target, &pivot)
             })?,
         ),
-        Command::Form { file, form } => {
-            print!("{}", with_svg(&file, |_, svg| form::run(svg, &file.ids, &form))?);
-            Ok(())
-        }
+        Command::Form { file, form } => with_svg(&file, |_, svg| form::run(svg, &file.ids, &form)),
         Command::Connect { file, out, connect } => finish(
             &out,
             with_svg(&file, |source, svg| {
