@@ -195,3 +195,21 @@ fn bad_forms_get_a_clear_message() {
     assert!(figures(&broken, &FiguresOptionsDto::default()).unwrap_err().to_string().contains("triangle 0 of the form names a vertex past the 8 vertices"));
     assert!(figures(&FormDto::default(), &FiguresOptionsDto::default()).unwrap_err().to_string().contains("no triangles"));
 }
+
+#[test]
+fn degenerate_and_extreme_forms_never_panic() {
+    // Zero-area triangles, repeated vertices, coordinates near f64's limits, a point far off the piece.
+    let cases: Vec<(Vec<V>, Vec<[usize; 3]>)> = vec![
+        (vec![[0.0; 3]; 3], vec![[0, 1, 2]]),
+        (vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0]], vec![[0, 1, 2], [2, 1, 0]]),
+        (vec![[1e300, 0.0, 0.0], [0.0, 1e300, 0.0], [0.0, 0.0, 1e300]], vec![[0, 1, 2], [0, 2, 1]]),
+        (vec![[1e-300, 0.0, 0.0], [0.0, 1e-300, 0.0], [0.0, 0.0, 1e-300]], vec![[0, 1, 2], [0, 2, 1]]),
+    ];
+    for (vertices, triangles) in cases {
+        let n = triangles.len();
+        let flat: Vec<[[f64; 2]; 3]> = triangles.iter().map(|t| t.map(|i| [vertices[i][0], vertices[i][1]])).collect();
+        let form = FormDto { vertices, triangles, piece: (0..n).map(|k| (k % 2) as u8).collect(), flat, stats: FormStatsDto { volume: 1.0 } };
+        let _ = figures(&form, &FiguresOptionsDto::default());
+        let _ = place(&form, &[vec![[0.0, 0.0], [1e308, -1e308]], vec![[5.0, 5.0]]]);
+    }
+}
