@@ -23,14 +23,14 @@ pub struct FormArgs {
     #[arg(long, default_value = "0", allow_hyphen_values = true)]
     pub offset: String,
     /// Seam vertices of the mesh (default 256; finer is slower and closer to the smooth form).
-    #[arg(long)]
+    #[arg(long, value_name = "N")]
     pub resolution: Option<f64>,
-    /// Density of the casting material in kg/m³ (concrete: 2400; plaster about 1000 when set).
-    #[arg(long, allow_negative_numbers = true)]
+    /// Density of the casting material in kg/m³ (default 2400, concrete; plaster is about 1000–1300).
+    #[arg(long, allow_negative_numbers = true, value_name = "KG_PER_M3")]
     pub density: Option<f64>,
     /// Solve N offsets evenly over one full turn and print a table of volume and height with
     /// the largest and the tallest marked; with -o plot.svg, draw it.
-    #[arg(long)]
+    #[arg(long, value_name = "N")]
     pub sweep: Option<usize>,
     /// Output: .stl or .obj (the mesh, in mm) or .svg (a picture of the form; with --sweep the
     /// plot). Repeatable: `-o form.stl -o form.svg` writes both from one solve.
