@@ -24,3 +24,7 @@ echo "== Paired stitching holes, about every 12 mm, 2.5 mm across, 4 mm in from 
 rm -f "$out.normalized.svg"
 echo
 echo "Wrote $out (cut: red hairline, score: blue, engrave: black). Open it in a browser, Inkscape or Illustrator."
+echo
+echo "== The 3D form of the stitched pieces (first anchor to first anchor, as the holes pair up)"
+"$dformer" form "$out" --id pebble --id ellipse -o out/demo-form.stl -o out/demo-form.svg
+echo "Wrote out/demo-form.stl (mm, for a slicer or CAD) and out/demo-form.svg (a picture of the form)."

@@ -2,11 +2,16 @@
 //!
 //! - `dformer json` speaks the core's JSON API on stdin/stdout (the Inkscape extension's bridge).
 //! - `dformer measure|normalize|connect FILE.svg` work on SVG files directly, for batch use.
+//! - `dformer form FILE.svg` solves the 3D form (figures, mesh, picture, sweep of the seam offset).
 
 mod advice;
 mod batch;
+mod form;
 mod laser;
+mod meshfile;
+mod plot;
 mod protocol;
+mod render;
 mod splice;
 mod svgdoc;
 mod units;
@@ -57,7 +62,8 @@ struct OutArgs {
 enum Command {
     /// Read one JSON request (or an array of them) on stdin, write the answer on stdout.
     /// A request is {"op": NAME, ...arguments by their JS names}; operations: measure,
-    /// normalize, connect, pathFromSvg, pathToSvg, DEFAULT_ACCURACY. Errors: {"error": message}
+    /// normalize, connect, simulate, formFigures, placeOnForm, pathFromSvg, pathToSvg,
+    /// DEFAULT_ACCURACY. Errors: {"error": message}
     /// and exit status 1.
     Json,
     /// Print the perimeter, area and drawing direction of each closed shape; what cannot be a
@@ -90,6 +96,14 @@ enum Command {
         out: OutArgs,
         #[command(flatten)]
         connect: batch::ConnectArgs,
+    },
+    /// The 3D D-form of exactly two shapes of equal perimeter: volume, litres, concrete mass,
+    /// area, height/width/depth, strain; -o writes .stl/.obj (mm) or .svg (a picture).
+    Form {
+        #[command(flatten)]
+        file: FileArgs,
+        #[command(flatten)]
+        form: form::FormArgs,
     },
 }
 
@@ -180,6 +194,7 @@ fn run_svg(command: Command) -> Result<(), String> {
                 batch::normalize(source, svg, file.choice(), &target, &pivot)
             })?,
         ),
+        Command::Form { file, form } => with_svg(&file, |_, svg| form::run(svg, &file.ids, &form)),
         Command::Connect { file, out, connect } => finish(
             &out,
             with_svg(&file, |source, svg| {

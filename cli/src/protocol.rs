@@ -7,6 +7,8 @@
 //! {"op": "normalize", "paths": [...], "options": {"target": "largest"}}
 //! {"op": "connect", "pieces": [...], "options": {"kind": "stitch", "count": 40}}
 //! {"op": "simulate", "pieces": [...], "options": {"offset": 0, "resolution": 128}}
+//! {"op": "formFigures", "form": <a simulate result>, "options": {"mmPerUnit": 1, "density": 2400}}
+//! {"op": "placeOnForm", "form": <a simulate result>, "points": [[[x, y], ...], [[x, y], ...]]}
 //! {"op": "pathFromSvg", "d": "M 0 0 L 10 0 ..."}
 //! {"op": "pathToSvg", "path": {...}}
 //! {"op": "DEFAULT_ACCURACY"}
@@ -32,6 +34,9 @@ pub const OPERATIONS: &[&str] = &[
     "measure",
     "normalize",
     "connect",
+    "simulate",
+    "formFigures",
+    "placeOnForm",
     "pathFromSvg",
     "pathToSvg",
     "DEFAULT_ACCURACY",
@@ -82,6 +87,11 @@ pub fn call(op: &str, request: &Map<String, Value>) -> Result<Value, Error> {
         "simulate" => out(api::simulate::simulate(
             &arg::<Vec<_>>(request, "pieces")?,
             &options(request)?,
+        )?),
+        "formFigures" => out(api::form::figures(&arg(request, "form")?, &options(request)?)?),
+        "placeOnForm" => out(api::form::place(
+            &arg(request, "form")?,
+            &arg::<Vec<_>>(request, "points")?,
         )?),
         "pathFromSvg" => out(api::svg::path_from_svg(&arg::<String>(request, "d")?)?),
         "pathToSvg" => out(api::svg::path_to_svg(&arg(request, "path")?)?),

@@ -8,13 +8,15 @@
 //! - [`arclen`]: arc length and its inverse, relative `accuracy` ([`arclen::DEFAULT_ACCURACY`]).
 //! - [`validate`]: input checks (degenerate outlines, self-intersection).
 //! - [`measure`], [`normalize`], [`connect`]: the three editing operations.
-//! - [`simulate`]: 3D form-finding of the glued D-form.
+//! - [`simulate`]: 3D form-finding of the glued D-form; [`form`]: its principal extents, and
+//!   flat points (connectors) carried onto it.
 
 pub mod api;
 pub mod arclen;
 pub mod connect;
 pub mod contour;
 pub mod error;
+pub mod form;
 pub mod measure;
 pub mod normalize;
 pub mod order;

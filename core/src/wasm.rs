@@ -148,3 +148,21 @@ pub fn simulate(pieces: JsValue, options: JsValue) -> Result<JsValue, JsError> {
         if options.is_undefined() || options.is_null() { Default::default() } else { from_js(options, "options")? };
     to_js(&api::simulate::simulate(&pieces, &options).map_err(js_error)?)
 }
+
+/// `formFigures(form, options?)` → `{ volume, litres, mass, density, height, width, depth, axes, center }`
+/// of a `simulate` result (see `crate::api::form`).
+#[wasm_bindgen(js_name = formFigures)]
+pub fn form_figures(form: JsValue, options: JsValue) -> Result<JsValue, JsError> {
+    let form: api::form::FormDto = from_js(form, "form")?;
+    let options: api::form::FiguresOptionsDto =
+        if options.is_undefined() || options.is_null() { Default::default() } else { from_js(options, "options")? };
+    to_js(&api::form::figures(&form, &options).map_err(js_error)?)
+}
+
+/// `placeOnForm(form, [pointsOfA, pointsOfB])` → the points on the 3D surface of a `simulate` result.
+#[wasm_bindgen(js_name = placeOnForm)]
+pub fn place_on_form(form: JsValue, points: JsValue) -> Result<JsValue, JsError> {
+    let form: api::form::FormDto = from_js(form, "form")?;
+    let points: Vec<Vec<[f64; 2]>> = from_js(points, "points")?;
+    to_js(&api::form::place(&form, &points).map_err(js_error)?)
+}

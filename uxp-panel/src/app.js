@@ -33,6 +33,9 @@
   var solveAgain = false;
   var exportWanted = ''; // 'obj' / 'stl' clicked while a solve was running: written when it is done
   var exportWhenSolved = null;
+  var sweeper = null; // the seam-offset sweep behind the 3D tab's plot (sweep.js)
+  var sweepKey = '';
+  var figures = null; // formFigures of the mesh on show
   var loadedSample = ''; // browser: the sample the loaded design came from ('' = opened files)
   var fieldErrors = {}; // field → why the value typed there is not used (shown instead of the design's message)
 
@@ -220,6 +223,10 @@
       renderMeasure();
       renderResult();
       document.body.dataset.state = design.ok ? 'ready' : 'error';
+      if (sweeper && sweepKey && sweepKey !== piecesKey(design)) {
+        sweepKey = '';
+        sweeper.cancel(); // the pieces changed: the curve being sampled is not theirs any more
+      }
       if (view === '3d') solve3d();
     });
   }
@@ -332,6 +339,7 @@
     window.addEventListener('resize', function () {
       recompute();
       if (viewer) viewer.draw();
+      renderSweep();
     });
   }
 
@@ -399,6 +407,52 @@
     var inUnits = a / Math.pow(DF.units.PER_UNIT[unit], 2);
     return 'area ' + inUnits.toLocaleString('en-US', { maximumFractionDigits: inUnits < 100 ? 3 : 0 }) + ' ' + unit + '²';
   }
+  function showFigures() {
+    var el = $('#cast3d');
+    figures = null;
+    el.textContent = '';
+    if (!mesh) return;
+    try {
+      figures = DF.core.formFigures(mesh, { mmPerUnit: 25.4 / 72, density: settings.density });
+      el.textContent = DF.form3d.castText(figures, fmt);
+    } catch (e) {
+      el.textContent = e.message;
+    }
+  }
+  /** Holes, numbers and start marks of the design `d` on the form solved for it. */
+  function showMarks(d) {
+    if (viewer && mesh && d && d.pieces) viewer.setMarks(DF.form3d.marksOnForm(d.pieces, mesh));
+  }
+  function piecesKey(d) {
+    return d && d.ok ? JSON.stringify(d.pieces.map(function (p) { return p.path; })) : '';
+  }
+  /** The plot under the slider: progress, curves, current offset, the two buttons. */
+  function renderSweep() {
+    if (!sweeper) return;
+    var st = sweeper.state();
+    var d = design;
+    var current = d && d.ok && st.key && st.key === piecesKey(d) ? d.offset / d.perimeter : null;
+    var best = DF.sweepPlot.render($('#sweep-plot'), st, current);
+    $('#sweep-progress').value = st.points.length;
+    $('#sweep-progress').max = st.count;
+    $('#sweep-progress').hidden = !st.running;
+    $('#sweep-status').textContent = DF.form3d.sweepText(st, best, fmt);
+    $('#sweep-largest').disabled = !best.largest || current === null;
+    $('#sweep-tallest').disabled = !best.tallest || current === null;
+    document.body.dataset.sweep = st.error ? 'error' : st.done ? 'done' : st.running ? 'running' : '';
+  }
+  /** Moves the seam offset to arc length `o` (what the slider does, without its 1/1000 steps). */
+  function seek(o) {
+    if (!design || !design.ok) return;
+    var P = design.perimeter;
+    // B's start = its anchor-based start + offset; choose the offset so that sB − sA ≡ o.
+    var off = (o + design.starts[0].arc - design.starts[1].base) % P;
+    params.start[1].offset = off < 0 ? off + P : off;
+    save();
+    showUnits();
+    recompute();
+  }
+
   /**
    * The solver may stop without a form in which both pieces keep their flat shape (near-square
    * rectangles on a circle, spiky outlines): what it drew is then only an approximation, often flat
@@ -442,11 +496,23 @@
         setStatus('', true);
       }
       viewer.setMesh(null);
+      mesh = null;
+      showFigures();
+      if (sweeper) {
+        sweepKey = '';
+        sweeper.cancel();
+      }
       return set3dMessage(design && design.error ? errorText(design) : host.kind === 'browser' ? browserCountText(0) : 'Select two closed paths.', false);
     }
     var d = design;
     var pieces = d.pieces.map(function (p) { return p.path; });
     var key = JSON.stringify(pieces);
+    if (!sweeper) sweeper = DF.sweep.create({ onChange: renderSweep });
+    if (DF.core.has('formFigures')) {
+      sweepKey = key;
+      sweeper.request(key, pieces, d.perimeter);
+    }
+    renderSweep();
     var options = { offset: d.offset };
     // Warm start only for small steps (a slider drag); a far-away shape is a worse start than none.
     var step = mesh ? Math.abs(d.offset - meshOffset) : Infinity;
@@ -461,12 +527,15 @@
       meshKey = key;
       meshOffset = d.offset;
       viewer.setMesh(mesh);
+      showMarks(d);
+      showFigures();
       var st = mesh.stats;
       set3dMessage(volumeText(st.volume) + ' · ' + areaText(st.area) + ' · strain ' + (st.maxStrain * 100).toFixed(2) + ' %' +
         (st.converged ? '' : ' · not converged'), true, st);
     }, function (e) {
       mesh = null;
       viewer.setMesh(null);
+      showFigures();
       set3dMessage(e.message, false);
     }).then(function () {
       solving = false;
@@ -484,6 +553,7 @@
   }
   function showView(which) {
     view = which;
+    document.body.dataset.view = which; // a docked panel gives the 3D tab more height (panel.css)
     $$('.tabs button').forEach(function (b) {
       var on = b.dataset.view === which;
       b.classList.toggle('selected', on);
@@ -498,15 +568,26 @@
       b.addEventListener('click', function () { showView(b.dataset.view); });
     });
     $('#offset3d').addEventListener('input', function (e) {
-      if (!design || !design.ok) return;
-      var P = design.perimeter;
-      var o = (Number(e.target.value) / 1000) * P;
-      // B's start = its anchor-based start + offset; choose the offset so that sB − sA ≡ o.
-      var off = (o + design.starts[0].arc - design.starts[1].base) % P;
-      params.start[1].offset = off < 0 ? off + P : off;
+      if (design && design.ok) seek((Number(e.target.value) / 1000) * design.perimeter);
+    });
+    $('#sweep-plot').addEventListener('click', function (e) {
+      if (design && design.ok) seek(DF.sweepPlot.fractionAt($('#sweep-plot'), e.clientX) * design.perimeter);
+    });
+    [['#sweep-largest', 'volume'], ['#sweep-tallest', 'height']].forEach(function (b) {
+      $(b[0]).addEventListener('click', function () {
+        var p = sweeper && DF.sweep.best(sweeper.state().points, b[1]);
+        if (p) seek(p.offset);
+      });
+    });
+    $('#density').value = settings.density;
+    $('#density').addEventListener('input', function (e) {
+      var v = Number(e.target.value);
+      var ok = e.target.value !== '' && v > 0 && isFinite(v);
+      e.target.classList.toggle('invalid', !ok);
+      if (!ok) return;
+      settings.density = v;
       save();
-      showUnits();
-      recompute();
+      showFigures();
     });
     // Meshes are always written in millimetres, whatever unit the panel shows: STL has no unit and
     // slicers read it as mm; OBJ has none either and CAD/CAM tools assume mm (the header says mm).
@@ -606,7 +687,11 @@
     });
   }
 
-  DF.app = { start: start, params: function () { return params; }, design: function () { return design; }, mesh: function () { return mesh; } };
+  DF.app = {
+    start: start, params: function () { return params; }, design: function () { return design; }, mesh: function () { return mesh; },
+    sweep: function () { return sweeper ? sweeper.state() : null; }, figures: function () { return figures; },
+    marks: function () { return viewer ? viewer.marks() : null; },
+  };
   if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start);
   else start();
 })(window.DF = window.DF || {});

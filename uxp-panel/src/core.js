@@ -116,6 +116,12 @@
     simulate: function (pieces, options) {
       return call('simulate', [pieces, options]);
     },
+    formFigures: function (form, options) {
+      return call('formFigures', [form, options]);
+    },
+    placeOnForm: function (form, points) {
+      return call('placeOnForm', [form, points]);
+    },
     has: function (name) {
       return !!api && typeof api[name] === 'function';
     },

@@ -12,6 +12,7 @@
       engrave: { name: 'Engrave', color: '#000000', width: HAIRLINE },
     },
     labelSize: 6,
+    density: 2400, // kg/m³ of the casting material (concrete), for the 3D tab's mass
     params: null,
     unit: null, // the unit the user chose (browser app); null: each file's own unit
   };
@@ -31,6 +32,7 @@
           if (l && typeof l.name === 'string' && l.name.trim()) s.layers[k].name = l.name.trim();
         });
         if (typeof saved.labelSize === 'number' && saved.labelSize > 0) s.labelSize = saved.labelSize;
+        if (typeof saved.density === 'number' && saved.density > 0 && isFinite(saved.density)) s.density = saved.density;
         if (saved.params && typeof saved.params === 'object') s.params = saved.params;
         if (/^(mm|cm|in|pt|px|pc)$/.test(saved.unit)) s.unit = saved.unit;
       }

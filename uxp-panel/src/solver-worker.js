@@ -1,9 +1,11 @@
 /* D-former panel: runs the core's `simulate` off the UI thread, so dragging the seam-offset slider
  * never freezes the panel. A classic worker script (CEP 8 has no module workers); it loads the same
- * bundled core as the page. Messages: { id, pieces, options } → { id, ok, result | error }. */
+ * bundled core as the page. Messages: { id, pieces, options } → { id, ok, result | error }; with
+ * `op: 'figures'` (the seam-offset sweep, sweep.js) the result is only the form's figures
+ * (DF.sweepPoint: volume, height, … of `simulate` + `formFigures`), not the whole mesh. */
 /* global dformerWasm, importScripts */
 'use strict';
-importScripts('../wasm/dformer.js');
+importScripts('../wasm/dformer.js', 'sweep-point.js');
 try {
   importScripts('../wasm/dformer-wasm-inline.js');
 } catch (missing) {
@@ -27,7 +29,7 @@ self.onmessage = function (e) {
     function () {
       var result;
       try {
-        result = dformerWasm.simulate(job.pieces, job.options);
+        result = job.op === 'figures' ? self.DF.sweepPoint(dformerWasm, job.pieces, job.options, job.figures) : dformerWasm.simulate(job.pieces, job.options);
       } catch (err) {
         self.postMessage({ id: job.id, ok: false, error: err && err.message ? err.message : String(err) });
         return;

@@ -1,63 +1,75 @@
 /* D-former panel: `simulate` on a worker thread when the page may start one (http, CEP), else on
  * the UI thread (a page opened from file:// in Chrome may not start workers). Host-agnostic.
- * solve(pieces, options) → Promise<result>; one job at a time, the caller coalesces requests. */
+ * solve(pieces, options) → Promise<result>; one job at a time, the caller coalesces requests.
+ * channel(here) → run(job): a worker of its own for another kind of job (the seam-offset sweep,
+ * sweep.js), `here(job)` → Promise the fallback on this thread. */
 (function (DF) {
   'use strict';
-  var worker = null;
-  var failed = false;
-  var nextId = 1;
-  var waiting = {};
 
-  function start() {
-    if (worker || failed || typeof Worker !== 'function') return worker;
-    try {
-      worker = new Worker('src/solver-worker.js');
-    } catch (e) {
-      void e;
-      failed = true;
-      return null;
+  function channel(here) {
+    var worker = null;
+    var failed = false;
+    var nextId = 1;
+    var waiting = {};
+
+    function start() {
+      if (worker || failed || typeof Worker !== 'function') return worker;
+      try {
+        worker = new Worker('src/solver-worker.js');
+      } catch (e) {
+        void e;
+        failed = true;
+        return null;
+      }
+      worker.onmessage = function (e) {
+        var job = waiting[e.data.id];
+        delete waiting[e.data.id];
+        if (!job) return;
+        if (e.data.ok) job.resolve(e.data.result);
+        else job.reject(new Error(e.data.error));
+      };
+      worker.onerror = function (e) {
+        // The worker could not load (e.g. file:// security): finish pending jobs on this thread.
+        e.preventDefault();
+        failed = true;
+        worker = null;
+        Object.keys(waiting).forEach(function (id) {
+          var job = waiting[id];
+          delete waiting[id];
+          here(job.message).then(job.resolve, job.reject);
+        });
+      };
+      return worker;
     }
-    worker.onmessage = function (e) {
-      var job = waiting[e.data.id];
-      delete waiting[e.data.id];
-      if (!job) return;
-      if (e.data.ok) job.resolve(e.data.result);
-      else job.reject(new Error(e.data.error));
-    };
-    worker.onerror = function (e) {
-      // The worker could not load (e.g. file:// security): finish pending jobs on this thread.
-      e.preventDefault();
-      failed = true;
-      worker = null;
-      Object.keys(waiting).forEach(function (id) {
-        var job = waiting[id];
-        delete waiting[id];
-        runHere(job.pieces, job.options).then(job.resolve, job.reject);
+
+    function run(message) {
+      var w = start();
+      if (!w) return here(message);
+      return new Promise(function (resolve, reject) {
+        var id = nextId++;
+        waiting[id] = { resolve: resolve, reject: reject, message: message };
+        w.postMessage(Object.assign({ id: id }, message));
       });
+    }
+    run.threaded = function () {
+      return !!worker && !failed;
     };
-    return worker;
+    return run;
   }
 
-  function runHere(pieces, options) {
+  var simulateJob = channel(function (job) {
     return new Promise(function (resolve) {
-      resolve(DF.core.simulate(pieces, options));
+      resolve(DF.core.simulate(job.pieces, job.options));
     });
-  }
-
-  function solve(pieces, options) {
-    var w = start();
-    if (!w) return runHere(pieces, options);
-    return new Promise(function (resolve, reject) {
-      var id = nextId++;
-      waiting[id] = { resolve: resolve, reject: reject, pieces: pieces, options: options };
-      w.postMessage({ id: id, pieces: pieces, options: options });
-    });
-  }
+  });
 
   DF.solver = {
-    solve: solve,
+    solve: function (pieces, options) {
+      return simulateJob({ pieces: pieces, options: options });
+    },
+    channel: channel,
     threaded: function () {
-      return !!worker && !failed;
+      return simulateJob.threaded();
     },
   };
 })(window.DF = window.DF || {});

@@ -42,8 +42,10 @@
     }
   }
 
+  var SEAM_RGB = [192, 24, 42];
   /** A depth-tested line (seam) of the given pixel width, drawn over the surface it lies on. */
-  function line(px, depth, W, H, a, b, bias, width) {
+  function line(px, depth, W, H, a, b, bias, width, rgb) {
+    var col = rgb || SEAM_RGB;
     var n = Math.ceil(Math.max(Math.abs(b[0] - a[0]), Math.abs(b[1] - a[1]))) + 1;
     var half = width / 2;
     for (var i = 0; i <= n; i++) {
@@ -59,9 +61,9 @@
           var idx = yi * W + xi;
           if (z < depth[idx]) continue;
           var o = idx * 4;
-          px[o] = 192;
-          px[o + 1] = 24;
-          px[o + 2] = 42;
+          px[o] = col[0];
+          px[o + 1] = col[1];
+          px[o + 2] = col[2];
           px[o + 3] = 255;
         }
       }
@@ -77,9 +79,17 @@
     var zoom = 1;
     var drag = null;
     var buffer = null;
+    var marks = null; // connectors on the form: { holes: [[x, y, z]…], labels: [{ at, text }…], lines: [[[x, y, z]…]…] }
+
+    /** Connectors on the surface (points from the core's placeOnForm), drawn with the next frame. */
+    function setMarks(m) {
+      marks = m;
+      draw();
+    }
 
     function setMesh(result) {
       mesh = result;
+      marks = null; // they belonged to the previous mesh
       if (!mesh || !mesh.vertices.length) return draw();
       var lo = [Infinity, Infinity, Infinity];
       var hi = [-Infinity, -Infinity, -Infinity];
@@ -162,9 +172,42 @@
           line(px, depth, W, H, P[mesh.seam[j]], P[mesh.seam[(j + 1) % mesh.seam.length]], bias, 2 * ss);
         }
       }
+      var labels = marks ? drawMarks(px, depth, W, H, P, s, ss) : [];
       bctx.putImageData(image, 0, 0);
       ctx.imageSmoothingEnabled = true;
       ctx.drawImage(buffer, 0, 0, canvas.width, canvas.height);
+      ctx.fillStyle = 'rgb(20,20,20)';
+      ctx.textAlign = 'center';
+      ctx.textBaseline = 'middle';
+      ctx.font = Math.round(10 * dpr) + 'px sans-serif';
+      labels.forEach(function (l) { ctx.fillText(l.text, l.x / ss, l.y / ss); });
+    }
+
+    /** Screen position (x, y, depth) of a model point, as for the mesh's vertices. */
+    function toScreen(v, W, H, s) {
+      var t = transform(v);
+      return [W / 2 + s * t[0], H / 2 - s * t[1], t[2]];
+    }
+    /** Holes (dark dots) and start marks (lines) depth-tested into the image; returns the labels
+     * whose anchor is visible (not behind the surface), in buffer pixels, to write as text. */
+    function drawMarks(px, depth, W, H, P, s, ss) {
+      var bias = 0.02 * radius;
+      var visible = function (p) {
+        var xi = Math.round(p[0]);
+        var yi = Math.round(p[1]);
+        return xi >= 0 && yi >= 0 && xi < W && yi < H && p[2] + bias >= depth[yi * W + xi];
+      };
+      (marks.lines || []).forEach(function (pts) {
+        for (var i = 0; i + 1 < pts.length; i++) line(px, depth, W, H, toScreen(pts[i], W, H, s), toScreen(pts[i + 1], W, H, s), bias, 1.5 * ss, [30, 60, 200]);
+      });
+      (marks.holes || []).forEach(function (v) {
+        var p = toScreen(v, W, H, s);
+        line(px, depth, W, H, p, p, bias, 3 * ss, [25, 25, 25]);
+      });
+      return (marks.labels || []).map(function (l) {
+        var p = toScreen(l.at, W, H, s);
+        return visible(p) ? { text: l.text, x: p[0], y: p[1] } : null;
+      }).filter(Boolean);
     }
 
     canvas.addEventListener('pointerdown', function (e) {
@@ -189,6 +232,8 @@
     });
     return {
       setMesh: setMesh,
+      setMarks: setMarks,
+      marks: function () { return marks; },
       draw: draw,
       view: function () { return { yaw: yaw, pitch: pitch, zoom: zoom }; },
     };

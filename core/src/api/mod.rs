@@ -3,6 +3,7 @@
 //! thin shells around these functions; no kurbo type crosses this boundary.
 
 pub mod connect;
+pub mod form;
 pub mod normalize;
 pub mod path;
 pub mod simulate;
