@@ -1,5 +1,5 @@
 //! Checks of a solved mesh shared by both paths: dihedral signs (reflex chords), convexity as a
-//! whole, flat folds.
+//! whole, flat folds, folds inside a piece, self-intersection, chords shared by both pieces.
 
 use super::metric::{self, Triangulation};
 use super::vec3::{centroid_and_radius, cross, dot, norm, sub, V3};
@@ -137,3 +137,107 @@ pub(crate) fn convex_as_a_whole(x: &[V3], tri: &[Triangulation; 2]) -> bool {
 /// Relative height above a face (see [`outside`]) that makes a solution non-convex: far above the
 /// tiny folds that coarse levels keep (see [`DENT_SINE`]).
 pub(crate) const OUTSIDE_TOL: f64 = 1e-2;
+
+/// Whether the flat sample polygon `pts` (counter-clockwise) is convex: no vertex turns
+/// clockwise by more than round-off (a relative 1e-12 of its squared size).
+pub fn is_convex_polygon(pts: &[[f64; 2]]) -> bool {
+    let n = pts.len();
+    let eps = 1e-12 * metric::size2(pts);
+    (0..n).all(|k| metric::orient(pts[(k + n - 1) % n], pts[k], pts[(k + 1) % n]) >= -eps)
+}
+
+/// The bend across chord i–j of piece `p` (the angle between the two triangles' normals: 0 when
+/// flat, π when folded back onto itself), or `None` for a seam edge or a missing triangle.
+pub fn bend(x: &[V3], t: &Triangulation, i: usize, j: usize) -> Option<f64> {
+    let k = t.opposite(i, j)?;
+    let l = t.opposite(j, i)?;
+    let n1 = cross(sub(x[j], x[i]), sub(x[k], x[i]));
+    let n2 = cross(sub(x[i], x[j]), sub(x[l], x[j]));
+    if norm(n1) == 0.0 || norm(n2) == 0.0 {
+        return Some(0.0);
+    }
+    Some(norm(cross(n1, n2)).atan2(dot(n1, n2)))
+}
+
+/// A bend above this inside a piece is a fold (a crease the sheet cannot take without damage).
+pub const FOLD_BEND: f64 = std::f64::consts::FRAC_PI_2;
+
+/// Largest bend ([`bend`]) across a chord of either piece.
+pub fn max_bend(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
+    tri.iter().flat_map(|t| t.chords().into_iter().filter_map(move |(i, j)| bend(x, t, i, j))).fold(0.0, f64::max)
+}
+
+/// Whether segment p–q passes through the inside of triangle (a, b, c), both strictly (by a
+/// relative margin `eps`, barycentric and along the segment): Möller & Trumbore 1997. A segment
+/// parallel to the triangle's plane, or within `flat` of it at both ends, does not count (two
+/// sheets lying on each other, as in the flat doubly covered D-form, touch but do not cross).
+fn segment_crosses(p: V3, q: V3, a: V3, b: V3, c: V3, eps: f64, flat: f64) -> bool {
+    let d = sub(q, p);
+    let (e1, e2) = (sub(b, a), sub(c, a));
+    // A segment within `flat` of the triangle's plane at both ends lies on it: sheets touching
+    // up to round-off (the flat doubly covered D-form ends ~1e-8 of its size apart).
+    let m = cross(e1, e2);
+    let lm = norm(m);
+    if lm > 0.0 && (dot(m, sub(p, a)) / lm).abs() <= flat && (dot(m, sub(q, a)) / lm).abs() <= flat {
+        return false;
+    }
+    let h = cross(d, e2);
+    let det = dot(e1, h);
+    if det.abs() <= 1e-9 * norm(e1) * norm(e2) * norm(d) {
+        return false;
+    }
+    let s = sub(p, a);
+    let u = dot(s, h) / det;
+    let w = cross(s, e1);
+    let v = dot(d, w) / det;
+    let t = dot(e2, w) / det;
+    u > eps && v > eps && u + v < 1.0 - eps && t > eps && t < 1.0 - eps
+}
+
+/// Whether two triangles of the closed mesh cross each other away from what they share: a side
+/// of one (not touching a shared vertex) through the inside of the other. Triangles sharing a
+/// side meet only along it unless folded, which [`max_bend`] sees. Bounding boxes first, so
+/// `O(F²)` box tests and a few segment tests.
+pub fn self_intersecting(x: &[V3], tri: &[Triangulation; 2]) -> bool {
+    let flat = 1e-6 * centroid_and_radius(x).1;
+    let faces: Vec<[usize; 3]> = tri.iter().flat_map(|t| t.tris.iter().copied()).collect();
+    let boxes: Vec<(V3, V3)> = faces
+        .iter()
+        .map(|f| {
+            let lo = [0, 1, 2].map(|a| f.iter().map(|&v| x[v][a]).fold(f64::INFINITY, f64::min));
+            let hi = [0, 1, 2].map(|a| f.iter().map(|&v| x[v][a]).fold(f64::NEG_INFINITY, f64::max));
+            (lo, hi)
+        })
+        .collect();
+    const EPS: f64 = 1e-9;
+    for i in 0..faces.len() {
+        for j in i + 1..faces.len() {
+            let (bi, bj) = (boxes[i], boxes[j]);
+            if (0..3).any(|a| bi.1[a] < bj.0[a] || bj.1[a] < bi.0[a]) {
+                continue;
+            }
+            let (fi, fj) = (faces[i], faces[j]);
+            let shared = fi.iter().filter(|v| fj.contains(v)).count();
+            if shared >= 2 {
+                continue;
+            }
+            let crosses = |f: [usize; 3], g: [usize; 3]| {
+                (0..3).any(|m| {
+                    let (p, q) = (f[m], f[(m + 1) % 3]);
+                    !g.contains(&p) && !g.contains(&q) && segment_crosses(x[p], x[q], x[g[0]], x[g[1]], x[g[2]], EPS, flat)
+                })
+            };
+            if crosses(fi, fj) || crosses(fj, fi) {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// Whether a chord is in both pieces' triangulations: that edge would bound four triangles, and
+/// the mesh would not be a 2-manifold.
+pub fn shared_chord(tri: &[Triangulation; 2]) -> bool {
+    let a: std::collections::HashSet<(usize, usize)> = tri[0].chords().into_iter().collect();
+    tri[1].chords().into_iter().any(|c| a.contains(&c))
+}

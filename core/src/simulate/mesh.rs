@@ -3,7 +3,8 @@
 //! in the flat piece), B's reversed.
 
 use super::metric::Triangulation;
-use super::vec3::{cross, dot, V3};
+use super::seam::SeamPieces;
+use super::vec3::{cross, dot, norm, sub, V3};
 
 /// The solver's result: positions, the two triangulations, and how it went.
 #[derive(Debug, Clone)]
@@ -35,4 +36,38 @@ pub(crate) fn make_outward(x: &mut [V3], tri: &[Triangulation; 2]) {
             p[2] = -p[2];
         }
     }
+}
+
+/// Relative length error under which a flipped chord still has its flat length in 3D.
+const COPLANAR_TOL: f64 = 1e-9;
+
+/// Flips each chord of B that A has too (an edge of four triangles: the mesh would not be a
+/// 2-manifold) to the other diagonal of its flat quad, when that diagonal is not A's and has its
+/// flat length in 3D already (the quad is planar, as everywhere in the flat doubly covered
+/// D-form of two congruent pieces, where both ear clippings are the same): the shape is
+/// unchanged and stays isometric. Returns the number of flips.
+pub fn unshare_planar(pieces: &SeamPieces, x: &[V3], tri: &mut [Triangulation; 2]) -> usize {
+    let mut flips = 0;
+    let pts = &pieces.flat[1].pts;
+    let s2 = super::metric::size2(pts);
+    for _ in 0..4 {
+        let a: std::collections::HashSet<(usize, usize)> = tri[0].chords().into_iter().collect();
+        let mut any = false;
+        for (i, j) in tri[1].chords() {
+            if !a.contains(&(i, j)) {
+                continue;
+            }
+            let (Some(k), Some(l)) = (tri[1].opposite(i, j), tri[1].opposite(j, i)) else { continue };
+            let d = pieces.chord(1, k, l);
+            let ok = d > 0.0 && (norm(sub(x[k], x[l])) / d - 1.0).abs() <= COPLANAR_TOL && !a.contains(&(k.min(l), k.max(l)));
+            if ok && tri[1].flip(i, j, pts, s2) {
+                flips += 1;
+                any = true;
+            }
+        }
+        if !any {
+            break;
+        }
+    }
+    flips
 }
