@@ -98,3 +98,41 @@ fn test_issue_14_congruent_kidneys_fold_flat_into_a_closed_two_manifold() {
         assert!(s.stats.converged, "n {n}: {:?}", s.stats);
     }
 }
+
+/// A convex piece with a shallow dent (0.5 % of its size) is nearly the convex piece: its form
+/// must be within 1 % of the undented form's volume (requirement 3 of issue 14), converged with
+/// every promise kept, and its volume must not depend on the resolution (128 vs 256, 1 %).
+#[test]
+fn shallow_dent_keeps_the_volume_of_the_undented_form() {
+    let (plain, dented) = (shapes::dented_ellipse(0.0), shapes::dented_ellipse(0.005));
+    assert!(!shapes::has_concave_stretch(&plain) && shapes::has_concave_stretch(&dented), "the dent makes the piece non-convex");
+    let circle = shapes::circle_for(&dented);
+    let mut volumes = Vec::new();
+    for n in [128, 256] {
+        let want = volume(&run(&plain, &shapes::circle_for(&plain), 0.0, n, 5000));
+        let s = run(&dented, &circle, 0.0, n, 5000);
+        assert_eq!(promise(&s), Ok(()), "n {n}: {}", mesh_checks::report(&s));
+        assert!(s.stats.converged, "n {n}: {:?}", s.stats);
+        let got = volume(&s);
+        println!("n {n}: undented volume {want:.6e} (wanted), dented {got:.6e} (got), {:.2e} relative", (got - want).abs() / want);
+        assert!((got - want).abs() <= 1e-2 * want, "n {n}: wanted the undented volume {want} within 1 %, got {got}");
+        volumes.push(got);
+    }
+    let (v128, v256) = (volumes[0], volumes[1]);
+    assert!((v128 - v256).abs() <= 1e-2 * v256, "wanted the same volume at 128 and 256 within 1 %, got {v128} and {v256}");
+}
+
+/// The dented ellipse and the circle are both symmetric about the x axis through the start
+/// point, so the form is mirror-symmetric: |X_k − X_0| = |X_{n−k} − X_0| along the seam.
+#[test]
+fn mirror_symmetric_dented_pair_gives_a_mirror_symmetric_form() {
+    let dented = shapes::dented_ellipse(0.005);
+    let s = run(&dented, &shapes::circle_for(&dented), 0.0, 128, 5000);
+    let n = s.seam.len();
+    let x = &s.vertices;
+    let d = |i: usize, j: usize| norm(sub(x[s.seam[i]], x[s.seam[j]]));
+    for k in 1..n / 2 {
+        let (l, r) = (d(0, k), d(0, n - k));
+        assert!((l - r).abs() < 1e-3 * l.max(r), "seam vertex {k}: wanted {l} (its mirror's), got {r}");
+    }
+}

@@ -238,6 +238,12 @@ pub fn self_intersecting(x: &[V3], tri: &[Triangulation; 2]) -> bool {
 /// Whether a chord is in both pieces' triangulations: that edge would bound four triangles, and
 /// the mesh would not be a 2-manifold.
 pub fn shared_chord(tri: &[Triangulation; 2]) -> bool {
-    let a: std::collections::HashSet<(usize, usize)> = tri[0].chords().into_iter().collect();
-    tri[1].chords().into_iter().any(|c| a.contains(&c))
+    let a = chord_keys(&tri[0]);
+    tri[1].chords().into_iter().any(|(i, j)| a.contains_key(&crate::order::pair_key(i, j)))
+}
+
+/// The chords of `t` keyed by [`crate::order::pair_key`] (`HashMap<u64, usize>`, the map type
+/// the triangulations use, so the .wasm holds one instantiation of the hash table).
+pub fn chord_keys(t: &Triangulation) -> std::collections::HashMap<u64, usize> {
+    t.chords().into_iter().map(|(i, j)| (crate::order::pair_key(i, j), 0)).collect()
 }

@@ -51,15 +51,15 @@ pub fn unshare_planar(pieces: &SeamPieces, x: &[V3], tri: &mut [Triangulation; 2
     let pts = &pieces.flat[1].pts;
     let s2 = super::metric::size2(pts);
     for _ in 0..4 {
-        let a: std::collections::HashSet<(usize, usize)> = tri[0].chords().into_iter().collect();
+        let a = super::checks::chord_keys(&tri[0]);
         let mut any = false;
         for (i, j) in tri[1].chords() {
-            if !a.contains(&(i, j)) {
+            if !a.contains_key(&crate::order::pair_key(i, j)) {
                 continue;
             }
             let (Some(k), Some(l)) = (tri[1].opposite(i, j), tri[1].opposite(j, i)) else { continue };
             let d = pieces.chord(1, k, l);
-            let ok = d > 0.0 && (norm(sub(x[k], x[l])) / d - 1.0).abs() <= COPLANAR_TOL && !a.contains(&(k.min(l), k.max(l)));
+            let ok = d > 0.0 && (norm(sub(x[k], x[l])) / d - 1.0).abs() <= COPLANAR_TOL && !a.contains_key(&crate::order::pair_key(k.min(l), k.max(l)));
             if ok && tri[1].flip(i, j, pts, s2) {
                 flips += 1;
                 any = true;

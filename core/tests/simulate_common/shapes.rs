@@ -121,15 +121,28 @@ pub fn pebble() -> Contour {
     Contour::new(knots, 0).unwrap()
 }
 
-/// A 2:1 ellipse (semi-axes 60, 30) through `m` points, with a smooth dent of depth `depth`
-/// (relative to its width, 120) centred on the top of its minor axis: the radius drops by
-/// `depth · 120 · exp(−((θ − π/2)/0.25)²)`.
+/// A 1:2 ellipse (semi-axes 30 across, 60 up) through 96 points, first anchor at (30, 0) on its
+/// flattest stretch, with a smooth dent there of depth `depth` relative to its height (120): the
+/// radius drops by `depth · 120 · exp(−(θ/0.25)²)`, θ in (−π, π]. Symmetric about the x axis.
 pub fn dented_ellipse(depth: f64) -> Contour {
     polar(96, |t| {
-        let r = 1.0 / ((t.cos() / 60.0).powi(2) + (t.sin() / 30.0).powi(2)).sqrt();
-        let d = t - std::f64::consts::FRAC_PI_2;
+        let r = 1.0 / ((t.cos() / 30.0).powi(2) + (t.sin() / 60.0).powi(2)).sqrt();
+        let d = if t > std::f64::consts::PI { t - TAU } else { t };
         r - depth * 120.0 * (-(d / 0.25).powi(2)).exp()
     })
+}
+
+/// Whether an outline turns clockwise somewhere (a concave stretch), from 64 points per segment.
+pub fn has_concave_stretch(c: &Contour) -> bool {
+    use kurbo::ParamCurve;
+    let pts: Vec<Point> = c.segments().flat_map(|s| (0..64).map(move |k| s.eval(k as f64 / 64.0))).collect();
+    let m = pts.len();
+    let turn = |k: usize| {
+        let (a, b, d) = (pts[(k + m - 1) % m], pts[k], pts[(k + 1) % m]);
+        (b.x - a.x) * (d.y - b.y) - (b.y - a.y) * (d.x - b.x)
+    };
+    let ccw = c.signed_area() > 0.0;
+    (0..m).any(|k| if ccw { turn(k) < 0.0 } else { turn(k) > 0.0 })
 }
 
 /// `c` mirrored in the y axis (x → −x): glued to `c` at offset 0 the two flat pieces coincide.
