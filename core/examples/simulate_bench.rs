@@ -7,10 +7,14 @@
 //! polyhedron's volume error is O(h²) in the seam step h for smooth convex seams). This is an
 //! estimate of the smooth limit, not an independent exact embedding; it is printed as such.
 
-use dformer::arclen::ArcTable;
+#[path = "../tests/simulate_common/shapes.rs"]
+mod shapes;
+#[path = "../tests/simulate_common/mesh_checks.rs"]
+mod mesh_checks;
+
 use dformer::contour::{Contour, Knot};
 use dformer::simulate::{simulate, SimulateOptions};
-use kurbo::{Affine, Point};
+use kurbo::Point;
 use std::time::Instant;
 
 /// Kappa for a quarter circle by one cubic.
@@ -31,14 +35,7 @@ fn ellipse(rx: f64, ry: f64) -> Contour {
     Contour::new(knots, 0).unwrap()
 }
 
-fn perimeter(c: &Contour) -> f64 {
-    ArcTable::new(c, 1e-13).total()
-}
-
-/// `c` scaled about the origin to perimeter `p`.
-fn with_perimeter(c: &Contour, p: f64) -> Contour {
-    c.transformed(Affine::scale(p / perimeter(c)))
-}
+use shapes::{perimeter, with_perimeter};
 
 fn mark(ok: bool) -> &'static str {
     if ok { "PASS" } else { "MISS" }
@@ -123,10 +120,32 @@ fn run(name: &str, a: &Contour, b: &Contour, offset: f64) {
     );
 }
 
+/// Issue 14's non-convex pairs at 256 seam vertices: time of a cold solve against the 1 s
+/// target (the WASM one; native is printed here), and what the mesh is, by the independent
+/// checks of `tests/simulate_common/mesh_checks.rs`.
+fn nonconvex(name: &str, a: &Contour, b: &Contour, offset: f64) {
+    let o = SimulateOptions { offset: offset * perimeter(a), resolution: 256, ..Default::default() };
+    let t0 = Instant::now();
+    let s = simulate(a, b, &o).expect("simulate");
+    let ms = t0.elapsed().as_secs_f64() * 1e3;
+    println!(
+        "== {name} (non-convex, 256 seam vertices) ==\n  time {ms:.1} ms (≤ 1000 ms) {}   converged {} {}   iterations {}\n  mesh: {}",
+        mark(ms <= 1000.0),
+        s.stats.converged,
+        mark(s.stats.converged),
+        s.stats.iterations,
+        mesh_checks::report(&s)
+    );
+}
+
 fn main() {
     let e = ellipse(2.0, 1.0);
     let p = perimeter(&e);
     run("two ellipses 2:1, offset a quarter perimeter", &e, &e, p / 4.0);
     let c = with_perimeter(&ellipse(1.0, 1.0), p);
     run("ellipse 2:1 with a circle", &e, &c, 0.0);
+    let (pebble, kidney, lobes) = (shapes::pebble(), shapes::kidney(), shapes::five_lobed());
+    nonconvex("Pebble + circle (the browser app's sample)", &pebble, &shapes::circle_for(&pebble), 0.0);
+    nonconvex("kidney + circle", &kidney, &shapes::circle_for(&kidney), 0.0);
+    nonconvex("five-lobed + circle", &lobes, &shapes::circle_for(&lobes), 0.0);
 }

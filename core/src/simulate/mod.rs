@@ -62,19 +62,30 @@
 //!
 //! ## Files
 //! - [`options`]: user options and their checks; [`seam`]: the two sampled pieces;
-//!   [`metric`]: chord triangulations of a flat polygon and flips; [`solver`]: Levenberg–Marquardt
-//!   with flips; [`hull`]: triangulations read off a convex hull, to restart a failed start;
-//!   [`stats`]: strain, seam gap, area, angle defects, volume; [`clock`]: a timer that works
-//!   natively and in wasm32.
+//!   [`metric`]: chord triangulations of a flat polygon and flips;
+//! - [`vec3`]: 3D vector helpers; [`mesh`]: the solver's result (positions and the two
+//!   triangulations), its volume and orientation; [`isometry`]: the length equations and one
+//!   Levenberg–Marquardt step ([`normal`]: its sparse LDLᵀ);
+//! - [`solve`]: which path solves a gluing; [`convex`]: the Alexandrov path (LM with flips
+//!   towards convexity, the multistart ladder, hull restarts, polygon pairs on their cone points);
+//! - [`checks`]: dihedral signs, convexity as a whole, flat folds; [`stats`]: strain, seam gap,
+//!   area, angle defects, volume; [`clock`]: a timer that works natively and in wasm32.
+//!
+//! Imports run one way: `vec3`, `metric` ← `seam`, `mesh`, `checks`, `isometry` ← `convex` ←
+//! `solve` ← this module; `stats` reads `mesh` and `checks`.
 
+pub mod checks;
 pub mod clock;
-pub mod hull;
+pub mod convex;
+pub mod isometry;
+pub mod mesh;
 pub mod metric;
 pub mod normal;
 pub mod options;
 pub mod seam;
-pub mod solver;
+pub mod solve;
 pub mod stats;
+pub mod vec3;
 
 use crate::contour::Contour;
 use crate::error::Result;
@@ -104,7 +115,7 @@ pub struct Simulation {
 pub fn simulate(a: &Contour, b: &Contour, options: &SimulateOptions) -> Result<Simulation> {
     let timer = clock::Timer::start();
     let glue = seam::Glue::new(a, b, options.offset)?;
-    let (pieces, solution) = solver::solve(&glue, options)?;
+    let (pieces, solution) = solve::solve(&glue, options)?;
     let mut sim = stats::finish(&pieces, solution);
     sim.stats.ms = timer.elapsed_ms();
     Ok(sim)

@@ -26,6 +26,10 @@ pub const PERIMETER_TOLERANCE: f64 = 1e-6;
 /// are placed on: below it the two chords of a straddling seam edge differ by < 1e-4·h.
 pub const CORNER_TURN: f64 = 0.02;
 
+/// Coarsest level of the multilevel start: below this the seam chords of A and B differ too
+/// much for the polyhedral metric to mean anything.
+pub const COARSEST: usize = 32;
+
 /// One sampled piece, in its own flat coordinates.
 #[derive(Debug, Clone)]
 pub struct FlatPiece {
@@ -179,7 +183,7 @@ impl Glue {
         // Both pieces' corners at one seam point take one sample (see `positions`).
         let same = 1e-3 * self.ta.total() / m as f64;
         let distinct = self.corners.iter().enumerate().filter(|&(i, &c)| i == 0 || c - self.corners[i - 1] > same).count();
-        m >= super::solver::COARSEST && 2 * m >= 3 * distinct
+        m >= COARSEST && 2 * m >= 3 * distinct
     }
 
     pub fn perimeter(&self) -> f64 {

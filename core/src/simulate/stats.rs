@@ -2,7 +2,9 @@
 //! returned mesh against the flat pieces, independently of the solver's own residuals.
 
 use super::seam::SeamPieces;
-use super::solver::{cross, dot, make_outward, map_affine, norm, reflex_sine, signed_volume, sub, Solution, V3};
+use super::checks::reflex_sine;
+use super::mesh::{make_outward, signed_volume, Solution};
+use super::vec3::{cross, dot, map_affine, norm, sub, V3};
 use super::Simulation;
 use std::f64::consts::TAU;
 

@@ -12,9 +12,9 @@
 //! is tried on every rung of the ladder; the brute-force hull it replaces (every triple whose
 //! plane has all points on one side, `O(n⁴)`) was limited to rungs of at most 64 vertices.
 
-use super::metric::{self, Triangulation};
-use super::seam::SeamPieces;
-use super::solver::{cross, dot, sub, V3};
+use super::super::metric::{self, Triangulation};
+use super::super::seam::SeamPieces;
+use super::super::vec3::{centroid_and_radius, cross, dot, sub, V3};
 
 /// Outward faces `[i, j, k]` (counter-clockwise seen from outside) of the convex hull of `x`, by
 /// the incremental algorithm (Clarkson & Shor 1989; de Berg et al., *Computational Geometry*,
@@ -27,7 +27,7 @@ fn faces(x: &[V3]) -> Vec<[usize; 3]> {
     if n < 4 {
         return Vec::new();
     }
-    let (_, size) = super::solver::centroid_and_radius(x);
+    let (_, size) = centroid_and_radius(x);
     let eps = 1e-9 * size;
     // Tetrahedron: the farthest point from x[0], the farthest from that line, the farthest from that plane.
     let far = |f: &dyn Fn(V3) -> f64| (0..n).max_by(|&a, &b| f(x[a]).total_cmp(&f(x[b]))).unwrap_or(0);
@@ -254,7 +254,7 @@ pub fn cut_along(pieces: &SeamPieces, chords: &[Vec<(usize, usize)>; 2]) -> Opti
 mod tests {
     use super::*;
     use crate::contour::{Contour, Knot};
-    use crate::simulate::{seam::Glue, solver, SimulateOptions};
+    use crate::simulate::{seam::Glue, solve, SimulateOptions};
     use kurbo::Point;
 
     fn ellipse(rx: f64, ry: f64) -> Contour {
@@ -296,7 +296,7 @@ mod tests {
         let e = ellipse(2.0, 1.0);
         let p = crate::arclen::ArcTable::new(&e, 1e-13).total();
         let glue = Glue::new(&e, &e, 0.25 * p).unwrap();
-        let (pieces, mut sol) = solver::solve(&glue, &SimulateOptions { resolution: 32, offset: 0.25 * p, ..Default::default() }).unwrap();
+        let (pieces, mut sol) = solve::solve(&glue, &SimulateOptions { resolution: 32, offset: 0.25 * p, ..Default::default() }).unwrap();
         let c = sol.x.iter().fold([0.0; 3], |s, q| [s[0] + q[0] / 32.0, s[1] + q[1] / 32.0, s[2] + q[2] / 32.0]);
         sol.x[5] = [0.5 * (sol.x[5][0] + c[0]), 0.5 * (sol.x[5][1] + c[1]), 0.5 * (sol.x[5][2] + c[2])];
         assert!(triangulations(&sol.x, &pieces).is_none(), "a dented vertex cannot split the hull into two triangulations");

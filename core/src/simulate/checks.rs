@@ -1,0 +1,249 @@
+//! Checks of a solved mesh shared by both paths: dihedral signs (reflex chords), convexity as a
+//! whole, flat folds, folds inside a piece, self-intersection, chords shared by both pieces.
+
+use super::metric::{self, Triangulation};
+use super::vec3::{centroid_and_radius, cross, dot, norm, sub, V3};
+
+/// Out-of-plane sine above which a chord counts as reflex and is flipped. Below it the two
+/// triangles are coplanar to round-off and either diagonal is right.
+pub const REFLEX_SINE: f64 = 1e-6;
+
+/// Out-of-plane sine of chord i–j in piece `p`: positive when reflex (the far vertex of the
+/// neighbouring triangle lies outside the plane of the outward face).
+pub fn reflex_sine(x: &[V3], t: &Triangulation, p: usize, i: usize, j: usize) -> Option<f64> {
+    let k = t.opposite(i, j)?;
+    let l = t.opposite(j, i)?;
+    let n = cross(sub(x[j], x[i]), sub(x[k], x[i]));
+    let (nn, dl) = (norm(n), sub(x[l], x[i]));
+    let ndl = norm(dl);
+    if nn == 0.0 || ndl == 0.0 {
+        return Some(0.0);
+    }
+    // A's faces are outward as ccw in the flat piece; B's are reversed.
+    let s = if p == 0 { 1.0 } else { -1.0 };
+    Some(s * dot(n, dl) / (nn * ndl))
+}
+
+/// Largest out-of-plane sine of a reflex chord (0 when the mesh is convex).
+pub(crate) fn worst_reflex(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
+    (0..2)
+        .flat_map(|p| tri[p].chords().into_iter().filter_map(move |(i, j)| reflex_sine(x, &tri[p], p, i, j)))
+        .fold(0.0, f64::max)
+}
+
+/// Whether the mesh lies in a plane (to 1e-5 of its size) without being a doubly covered convex
+/// polygon: its area is more than twice the area of its points' convex hull in that plane.
+///
+/// The dihedral and plane tests cannot see such a state: a fold of 180° has out-of-plane sine
+/// 0, and no vertex lies above the plane of any face. Yet a flat-folded sheet (flaps folded onto
+/// a face, covering parts of the plane four times) is an isometric realization that is not
+/// convex; the only flat convex one (Alexandrov's degenerate case) is a doubly covered convex
+/// polygon, whose area is exactly twice its hull's. Two equilateral triangles glued at a
+/// quarter-perimeter offset ended in such a flat fold, "converged" at volume 0.
+pub(crate) fn folded_flat(x: &[V3], tri: &[Triangulation; 2]) -> bool {
+    let (c, size) = centroid_and_radius(x);
+    // Normal of the largest triangle; flat when every vertex is within 1e-5·size of its plane
+    // (a convex body that thin has an area within O(1e-10) of twice its shadow's, far inside the
+    // 1e-6 allowed below, so a thin convex shape is never taken for a fold).
+    let mut best = ([0.0; 3], 0.0);
+    let mut area = 0.0;
+    for t in tri {
+        for &[a, b, d] in &t.tris {
+            let m = cross(sub(x[b], x[a]), sub(x[d], x[a]));
+            let l = norm(m);
+            area += 0.5 * l;
+            if l > best.1 {
+                best = (m, l);
+            }
+        }
+    }
+    if best.1 == 0.0 || size == 0.0 {
+        return false;
+    }
+    let u = best.0.map(|v| v / best.1);
+    if x.iter().any(|p| dot(u, sub(*p, c)).abs() > 1e-5 * size) {
+        return false;
+    }
+    // In-plane coordinates, then the hull's area (Andrew's monotone chain).
+    let e1 = if u[0].abs() < 0.9 { [1.0, 0.0, 0.0] } else { [0.0, 1.0, 0.0] };
+    let e1 = { let w = cross(u, e1); let l = norm(w); w.map(|v| v / l) };
+    let e2 = cross(u, e1);
+    let q: Vec<[f64; 2]> = x.iter().map(|p| [dot(sub(*p, c), e1), dot(sub(*p, c), e2)]).collect();
+    // Lexicographic (x, then y) order by two stable argsorts, y first (the crate's one f64 sort,
+    // see crate::order).
+    let by_y: Vec<[f64; 2]> = crate::order::argsort(&q.iter().map(|p| p[1]).collect::<Vec<_>>()).into_iter().map(|i| q[i]).collect();
+    let q: Vec<[f64; 2]> = crate::order::argsort(&by_y.iter().map(|p| p[0]).collect::<Vec<_>>()).into_iter().map(|i| by_y[i]).collect();
+    let mut hull: Vec<[f64; 2]> = Vec::with_capacity(2 * q.len());
+    for pass in 0..2 {
+        let start = hull.len();
+        let it: Box<dyn Iterator<Item = &[f64; 2]>> = if pass == 0 { Box::new(q.iter()) } else { Box::new(q.iter().rev()) };
+        for &p in it {
+            while hull.len() >= start + 2 && metric::orient(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0 {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    let h2: f64 = (0..hull.len()).map(|m| metric::orient([0.0, 0.0], hull[m], hull[(m + 1) % hull.len()])).sum();
+    area > (1.0 + 1e-6) * h2.abs()
+}
+
+/// Largest height of a vertex above the plane of a face (outward), relative to the largest
+/// distance of a vertex from the centroid: 0 for a convex mesh. Every `stride`-th vertex is
+/// tested against every face.
+///
+/// No reflex chord is not enough: every chord can fold outward while the surface as a whole is
+/// not convex (a locally convex but not embedded realization). A triangle glued to a circle ended
+/// there, converged and with no reflex chord, 2 % below the convex shape's volume and with
+/// vertices a whole size outside some face's plane. A closed surface that is convex at every
+/// edge and embedded is convex (Hadamard), so the two tests together rule out such branches.
+pub(crate) fn outside(x: &[V3], tri: &[Triangulation; 2], stride: usize) -> f64 {
+    let (_, size) = centroid_and_radius(x);
+    let mut worst = 0.0f64;
+    for (p, t) in tri.iter().enumerate() {
+        for &[a, b, c] in &t.tris {
+            let (b, c) = if p == 0 { (b, c) } else { (c, b) };
+            let m = cross(sub(x[b], x[a]), sub(x[c], x[a]));
+            let l = norm(m);
+            if l == 0.0 {
+                continue;
+            }
+            let top = x.iter().step_by(stride.max(1)).map(|q| dot(m, sub(*q, x[a]))).fold(0.0, f64::max);
+            worst = worst.max(top / l);
+        }
+    }
+    if size > 0.0 { worst / size } else { 0.0 }
+}
+
+/// [`outside`] for the solver's loops: against every face, 32 vertices spread along the seam.
+/// The test is for whole-shape failures (a vertex a sizeable fraction of the size outside), which
+/// no 32 of them all miss, and it keeps the cost at 32·(2n − 4) plane tests, nothing next to a
+/// solver step.
+pub(crate) fn outside_sampled(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
+    outside(x, tri, x.len() / 32)
+}
+
+/// Whether every vertex (not only [`outside_sampled`]'s 32) is within [`OUTSIDE_TOL`] of every
+/// face: the test of a finest-level answer before it is called converged, run once per answer
+/// (2n² plane tests). A nearly flat form (a 24-gon or a 48-gon glued to a circle, nearly
+/// congruent pieces) can fold a rim face up so that a few vertices stand a whole size above its
+/// plane while the 32 sampled ones do not: such shapes "converged" at 64 and 128 seam vertices
+/// with 32–40 reflex chords and a vertex 1.8 sizes outside a face.
+pub(crate) fn convex_as_a_whole(x: &[V3], tri: &[Triangulation; 2]) -> bool {
+    outside(x, tri, 1) <= OUTSIDE_TOL
+}
+
+/// Relative height above a face (see [`outside`]) that makes a solution non-convex: far above the
+/// tiny folds that coarse levels keep (see [`DENT_SINE`]).
+pub(crate) const OUTSIDE_TOL: f64 = 1e-2;
+
+/// Whether the flat sample polygon `pts` (counter-clockwise) is convex: no vertex turns
+/// clockwise by more than round-off (a relative 1e-12 of its squared size).
+pub fn is_convex_polygon(pts: &[[f64; 2]]) -> bool {
+    let n = pts.len();
+    let eps = 1e-12 * metric::size2(pts);
+    (0..n).all(|k| metric::orient(pts[(k + n - 1) % n], pts[k], pts[(k + 1) % n]) >= -eps)
+}
+
+/// The bend across chord i–j of piece `p` (the angle between the two triangles' normals: 0 when
+/// flat, π when folded back onto itself), or `None` for a seam edge or a missing triangle.
+pub fn bend(x: &[V3], t: &Triangulation, i: usize, j: usize) -> Option<f64> {
+    let k = t.opposite(i, j)?;
+    let l = t.opposite(j, i)?;
+    let n1 = cross(sub(x[j], x[i]), sub(x[k], x[i]));
+    let n2 = cross(sub(x[i], x[j]), sub(x[l], x[j]));
+    if norm(n1) == 0.0 || norm(n2) == 0.0 {
+        return Some(0.0);
+    }
+    Some(norm(cross(n1, n2)).atan2(dot(n1, n2)))
+}
+
+/// A bend above this inside a piece is a fold (a crease the sheet cannot take without damage).
+pub const FOLD_BEND: f64 = std::f64::consts::FRAC_PI_2;
+
+/// Largest bend ([`bend`]) across a chord of either piece.
+pub fn max_bend(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
+    tri.iter().flat_map(|t| t.chords().into_iter().filter_map(move |(i, j)| bend(x, t, i, j))).fold(0.0, f64::max)
+}
+
+/// Whether segment p–q passes through the inside of triangle (a, b, c), both strictly (by a
+/// relative margin `eps`, barycentric and along the segment): Möller & Trumbore 1997. A segment
+/// parallel to the triangle's plane, or within `flat` of it at both ends, does not count (two
+/// sheets lying on each other, as in the flat doubly covered D-form, touch but do not cross).
+fn segment_crosses(p: V3, q: V3, a: V3, b: V3, c: V3, eps: f64, flat: f64) -> bool {
+    let d = sub(q, p);
+    let (e1, e2) = (sub(b, a), sub(c, a));
+    // A segment within `flat` of the triangle's plane at both ends lies on it: sheets touching
+    // up to round-off (the flat doubly covered D-form ends ~1e-8 of its size apart).
+    let m = cross(e1, e2);
+    let lm = norm(m);
+    if lm > 0.0 && (dot(m, sub(p, a)) / lm).abs() <= flat && (dot(m, sub(q, a)) / lm).abs() <= flat {
+        return false;
+    }
+    let h = cross(d, e2);
+    let det = dot(e1, h);
+    if det.abs() <= 1e-9 * norm(e1) * norm(e2) * norm(d) {
+        return false;
+    }
+    let s = sub(p, a);
+    let u = dot(s, h) / det;
+    let w = cross(s, e1);
+    let v = dot(d, w) / det;
+    let t = dot(e2, w) / det;
+    u > eps && v > eps && u + v < 1.0 - eps && t > eps && t < 1.0 - eps
+}
+
+/// Whether two triangles of the closed mesh cross each other away from what they share: a side
+/// of one (not touching a shared vertex) through the inside of the other. Triangles sharing a
+/// side meet only along it unless folded, which [`max_bend`] sees. Bounding boxes first, so
+/// `O(F²)` box tests and a few segment tests.
+pub fn self_intersecting(x: &[V3], tri: &[Triangulation; 2]) -> bool {
+    let flat = 1e-6 * centroid_and_radius(x).1;
+    let faces: Vec<[usize; 3]> = tri.iter().flat_map(|t| t.tris.iter().copied()).collect();
+    let boxes: Vec<(V3, V3)> = faces
+        .iter()
+        .map(|f| {
+            let lo = [0, 1, 2].map(|a| f.iter().map(|&v| x[v][a]).fold(f64::INFINITY, f64::min));
+            let hi = [0, 1, 2].map(|a| f.iter().map(|&v| x[v][a]).fold(f64::NEG_INFINITY, f64::max));
+            (lo, hi)
+        })
+        .collect();
+    const EPS: f64 = 1e-9;
+    for i in 0..faces.len() {
+        for j in i + 1..faces.len() {
+            let (bi, bj) = (boxes[i], boxes[j]);
+            if (0..3).any(|a| bi.1[a] < bj.0[a] || bj.1[a] < bi.0[a]) {
+                continue;
+            }
+            let (fi, fj) = (faces[i], faces[j]);
+            let shared = fi.iter().filter(|v| fj.contains(v)).count();
+            if shared >= 2 {
+                continue;
+            }
+            let crosses = |f: [usize; 3], g: [usize; 3]| {
+                (0..3).any(|m| {
+                    let (p, q) = (f[m], f[(m + 1) % 3]);
+                    !g.contains(&p) && !g.contains(&q) && segment_crosses(x[p], x[q], x[g[0]], x[g[1]], x[g[2]], EPS, flat)
+                })
+            };
+            if crosses(fi, fj) || crosses(fj, fi) {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// Whether a chord is in both pieces' triangulations: that edge would bound four triangles, and
+/// the mesh would not be a 2-manifold.
+pub fn shared_chord(tri: &[Triangulation; 2]) -> bool {
+    let a = chord_keys(&tri[0]);
+    tri[1].chords().into_iter().any(|(i, j)| a.contains_key(&crate::order::pair_key(i, j)))
+}
+
+/// The chords of `t` keyed by [`crate::order::pair_key`] (`HashMap<u64, usize>`, the map type
+/// the triangulations use, so the .wasm holds one instantiation of the hash table).
+pub fn chord_keys(t: &Triangulation) -> std::collections::HashMap<u64, usize> {
+    t.chords().into_iter().map(|(i, j)| (crate::order::pair_key(i, j), 0)).collect()
+}

@@ -1,0 +1,225 @@
+//! Levenberg–Marquardt on a fixed triangulation with flips of reflex chords between solves
+//! (Lawson-style, towards the convex realization; see the module docs of [`crate::simulate`]).
+
+use super::super::checks::{reflex_sine, REFLEX_SINE};
+use super::super::isometry::{bars, cost, max_strain, pattern, step, STRAIN_TOL};
+use super::super::mesh::make_outward;
+use super::super::metric::{self, Triangulation};
+use super::super::seam::SeamPieces;
+use super::super::vec3::{size, V3};
+use std::collections::HashMap;
+
+/// How often a chord may be flipped away before it is frozen: a chord that keeps coming back
+/// sits between two nearly coplanar triangles (or a non-convex piece), where flipping it again
+/// would only cycle.
+pub(crate) const MAX_FLIPS_PER_EDGE: usize = 2;
+
+/// Whether a relaxation may mirror the positions to make the volume positive.
+///
+/// A start whose orientation is not known (a lifted flat layout) must be allowed to; a start
+/// that is already outward-oriented (a coarser level's solution or a warm start from a previous
+/// result, whose A faces are outward by construction) must not. Mirroring such a start while its
+/// triangulation is still the flat ear-clipping strip (whose realization has no meaningful
+/// volume sign) reverses what "outward" means half way through the flips, and the flips then
+/// drive A's chords onto B's cap: both sheets end up on the same cap and the shape collapses to
+/// volume ≈ 0 (the warm-start bug; see `warm_start_keeps_its_orientation` in the tests).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Orientation {
+    Free,
+    Kept,
+}
+
+/// Makes the mesh outward-oriented (positive volume) by mirroring, an isometry, when the
+/// orientation is [`Orientation::Free`], then flips every reflex chord whose flat quad allows
+/// it. Returns the number of flips.
+pub(crate) fn flip_pass(
+    x: &mut [V3],
+    tri: &mut [Triangulation; 2],
+    pieces: &SeamPieces,
+    // Keyed by `order::pair_key(i, j)`: `HashMap<u64, usize>` is the map type the triangulations
+    // use too, so the .wasm holds one instantiation of the hash table, not two.
+    count: &mut [HashMap<u64, usize>; 2],
+    orientation: Orientation,
+) -> usize {
+    if orientation == Orientation::Free {
+        make_outward(x, tri);
+    }
+    let mut flips = 0;
+    for p in 0..2 {
+        let pts = &pieces.flat[p].pts;
+        let s2 = metric::size2(pts);
+        for (i, j) in tri[p].chords() {
+            let key = crate::order::pair_key(i, j);
+            if count[p].get(&key).is_some_and(|&c| c >= MAX_FLIPS_PER_EDGE) {
+                continue;
+            }
+            let Some(s) = reflex_sine(x, &tri[p], p, i, j) else { continue };
+            if s <= REFLEX_SINE {
+                continue;
+            }
+            // The new chord must be able to be an edge (see [`shortest_flips`]): a flip that
+            // would put in a chord longer than the path through the other piece is refused,
+            // unless the chord it replaces is as bad.
+            let (Some(k), Some(l)) = (tri[p].opposite(i, j), tri[p].opposite(j, i)) else { continue };
+            if excess(pieces, p, k, l) > SHORTEST_TOL.max(excess(pieces, p, i, j)) {
+                continue;
+            }
+            if tri[p].flip(i, j, pts, s2) {
+                *count[p].entry(key).or_insert(0) += 1;
+                flips += 1;
+            }
+        }
+    }
+    flips
+}
+
+/// Relative excess `d_p(i, j) / d_q(i, j) − 1` of chord i–j of piece `p` over the same chord of
+/// the other piece `q`. An isometric realization has `|X_i − X_j| = d_p(i, j)` for every edge of
+/// `p` and `|X_i − X_j| ≤ d_q(i, j)` (the straight segment is no longer than the path across the
+/// other piece, a curve on the surface), so a chord with positive excess cannot be an edge of any
+/// realization, convex or not. (For a convex polyhedron this is the fact that every edge is a
+/// shortest path between its ends.)
+pub(crate) fn excess(pieces: &SeamPieces, p: usize, i: usize, j: usize) -> f64 {
+    pieces.chord(p, i, j) / pieces.chord(1 - p, i, j).max(f64::MIN_POSITIVE) - 1.0
+}
+
+/// Excess (see [`excess`]) tolerated in a chord put in by a flip: the seam edges' lengths are
+/// the mean of A's and B's chords, which makes the metric's distances differ from either flat
+/// piece's at `O(h²)` relative, so only a clear excess is ruled out.
+pub(crate) const SHORTEST_TOL: f64 = 1e-6;
+
+/// Flips every chord of piece `p` that cannot be an edge (positive [`excess`]) to the other
+/// diagonal of its quad, when that one's excess is smaller, until none can be. Purely intrinsic
+/// (no positions): it turns the ear-clipping strip, which on a rectangle glued to a circle holds
+/// rectangle chords up to 8 % longer than the circle's between the same seam vertices (and circle
+/// chords up to 59 % longer than the rectangle's), into a start the isometry equations can meet.
+/// Each flip lowers the sum of the chords' excess ratios, so it ends.
+pub(crate) fn shortest_flips(t: &mut Triangulation, pieces: &SeamPieces, p: usize) {
+    let pts = &pieces.flat[p].pts;
+    let s2 = metric::size2(pts);
+    loop {
+        let mut any = false;
+        for (i, j) in t.chords() {
+            let e = excess(pieces, p, i, j);
+            if e <= 0.0 {
+                continue;
+            }
+            let (Some(k), Some(l)) = (t.opposite(i, j), t.opposite(j, i)) else { continue };
+            if excess(pieces, p, k, l) < e && t.flip(i, j, pts, s2) {
+                any = true;
+            }
+        }
+        if !any {
+            break;
+        }
+    }
+}
+
+/// Steps after which [`relax`] folds reflex chords if the cost has not halved (see there).
+pub(crate) const PLATEAU: usize = 10;
+
+/// Result of relaxing one level.
+pub(crate) struct Relaxed {
+    pub(crate) iterations: usize,
+    pub(crate) flips: usize,
+    pub(crate) converged: bool,
+}
+
+impl Relaxed {
+    /// Adds this relaxation's steps and flips to a cold solve's running `(steps, flips)`.
+    pub(crate) fn tally(self, steps: &mut (usize, usize)) -> Self {
+        steps.0 += self.iterations;
+        steps.1 += self.flips;
+        self
+    }
+}
+
+/// Levenberg–Marquardt on a fixed triangulation until the step is negligible, then one pass of
+/// flips; repeated until nothing flips. `step_tol` is relative to the shape's size.
+pub(crate) fn relax(
+    pieces: &SeamPieces,
+    x: &mut Vec<V3>,
+    tri: &mut [Triangulation; 2],
+    budget: usize,
+    step_tol: f64,
+    orientation: Orientation,
+) -> Relaxed {
+    let n = pieces.n;
+    let mut count = [HashMap::new(), HashMap::new()];
+    let mut flips = 0;
+    for _ in 0..n {
+        let f = flip_pass(x, tri, pieces, &mut count, orientation);
+        flips += f;
+        if f == 0 {
+            break;
+        }
+    }
+    let scale = size(x).max(f64::MIN_POSITIVE);
+    let mut bars = bars(pieces, tri);
+    let mut ne = pattern(n, &bars);
+    let mut c = cost(x, &bars);
+    let mut lambda = 1e-4;
+    let mut iterations = 0;
+    let mut converged = false;
+    let mut window = (0usize, c);
+    while iterations < budget {
+        // A triangulation with no isometric realization makes the least-squares cost plateau long
+        // before the step gets negligible (hundreds of steps on a rectangle with a circle): when
+        // the cost has not halved in PLATEAU steps, fold the reflex chords now.
+        if iterations - window.0 >= PLATEAU {
+            let slow = c > 0.5 * window.1;
+            window = (iterations, c);
+            if slow {
+                let f = flip_pass(x, tri, pieces, &mut count, orientation);
+                if f > 0 {
+                    flips += f;
+                    bars = self::bars(pieces, tri);
+                    ne = pattern(n, &bars);
+                    c = cost(x, &bars);
+                    lambda = 1e-4;
+                    window = (iterations, c);
+                }
+            }
+        }
+        iterations += 1;
+        let Some(d) = step(x, &bars, lambda, &mut ne) else {
+            lambda *= 10.0;
+            if lambda > 1e12 {
+                break;
+            }
+            continue;
+        };
+        let trial: Vec<V3> = (0..n).map(|k| [x[k][0] + d[3 * k], x[k][1] + d[3 * k + 1], x[k][2] + d[3 * k + 2]]).collect();
+        let ct = cost(&trial, &bars);
+        let dmax = d.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let stalled = dmax <= step_tol * scale || c == 0.0;
+        if ct <= c {
+            *x = trial;
+            c = ct;
+            lambda = (lambda / 3.0).max(1e-12);
+        } else if !stalled {
+            lambda *= 4.0;
+            if lambda > 1e12 {
+                break;
+            }
+            continue;
+        }
+        if !stalled {
+            continue;
+        }
+        // The realization of this triangulation is found: fold the reflex chords the other way.
+        let f = flip_pass(x, tri, pieces, &mut count, orientation);
+        flips += f;
+        if f > 0 {
+            bars = self::bars(pieces, tri);
+            ne = pattern(n, &bars);
+            c = cost(x, &bars);
+            lambda = 1e-4;
+            continue;
+        }
+        let worst = max_strain(x, &bars);
+        converged = worst <= STRAIN_TOL;
+        break;
+    }
+    Relaxed { iterations, flips, converged }
+}

@@ -1,0 +1,151 @@
+//! Outlines for the simulate tests and the native bench: smooth closed curves through sample
+//! points (Catmull–Rom handles), polar shapes, polylines, the browser app's bundled "Pebble"
+//! and scaling to a given perimeter. Shared by `core/tests/simulate_sheet.rs` and
+//! `core/examples/simulate_bench.rs` (included there by `#[path]`).
+#![allow(dead_code)]
+
+use dformer::arclen::ArcTable;
+use dformer::contour::{Contour, Knot};
+use kurbo::{Affine, Point};
+use std::f64::consts::TAU;
+
+/// A smooth closed outline through `pts` (in order), tangents by Catmull–Rom (handle = 1/6 of
+/// the neighbours' difference), first anchor at `pts[0]`.
+pub fn smooth(pts: &[(f64, f64)]) -> Contour {
+    let m = pts.len();
+    let knots = (0..m)
+        .map(|i| {
+            let (a, prev, next) = (pts[i], pts[(i + m - 1) % m], pts[(i + 1) % m]);
+            let t = ((next.0 - prev.0) / 6.0, (next.1 - prev.1) / 6.0);
+            Knot { anchor: Point::new(a.0, a.1), left: Point::new(a.0 - t.0, a.1 - t.1), right: Point::new(a.0 + t.0, a.1 + t.1) }
+        })
+        .collect();
+    Contour::new(knots, 0).unwrap()
+}
+
+/// A polar shape `r(θ)` through `m` points, smooth.
+pub fn polar(m: usize, r: impl Fn(f64) -> f64) -> Contour {
+    let pts: Vec<(f64, f64)> = (0..m).map(|k| k as f64 * TAU / m as f64).map(|t| (r(t) * t.cos(), r(t) * t.sin())).collect();
+    smooth(&pts)
+}
+
+/// A closed polyline (every knot a corner).
+pub fn polyline(pts: &[(f64, f64)]) -> Contour {
+    Contour::new(pts.iter().map(|&(x, y)| Knot::corner(Point::new(x, y))).collect(), 0).unwrap()
+}
+
+pub fn perimeter(c: &Contour) -> f64 {
+    ArcTable::new(c, 1e-13).total()
+}
+
+/// `c` scaled about the origin to perimeter `p`.
+pub fn with_perimeter(c: &Contour, p: f64) -> Contour {
+    c.transformed(Affine::scale(p / perimeter(c)))
+}
+
+/// A circle of the same perimeter as `c` (eight smooth arcs).
+pub fn circle_for(c: &Contour) -> Contour {
+    with_perimeter(&circle(1.0, 8), perimeter(c))
+}
+
+/// A circle of radius `r` by `m` cubic arcs, first anchor at (r, 0).
+pub fn circle(r: f64, m: usize) -> Contour {
+    let h = 4.0 / 3.0 * (TAU / (4.0 * m as f64)).tan() * r;
+    let knots = (0..m)
+        .map(|k| {
+            let t = k as f64 * TAU / m as f64;
+            let (c, s) = (t.cos(), t.sin());
+            let a = Point::new(r * c, r * s);
+            Knot { anchor: a, left: Point::new(a.x + h * s, a.y - h * c), right: Point::new(a.x - h * s, a.y + h * c) }
+        })
+        .collect();
+    Contour::new(knots, 0).unwrap()
+}
+
+/// The kidney of issue 14: r = 60(1 + 0.35 cos 2θ − 0.25 cos θ + 0.2 sin 3θ).
+pub fn kidney() -> Contour {
+    polar(72, |t| 60.0 * (1.0 + 0.35 * (2.0 * t).cos() - 0.25 * t.cos() + 0.2 * (3.0 * t).sin()))
+}
+
+/// Five lobes: r = 55(1 + 0.12 sin 5θ).
+pub fn five_lobed() -> Contour {
+    polar(80, |t| 55.0 * (1.0 + 0.12 * (5.0 * t).sin()))
+}
+
+/// An organic blob: r = 50(1 + 0.18 cos 2θ + 0.12 sin 3θ − 0.08 cos 5θ).
+pub fn blob() -> Contour {
+    polar(72, |t| 50.0 * (1.0 + 0.18 * (2.0 * t).cos() + 0.12 * (3.0 * t).sin() - 0.08 * (5.0 * t).cos()))
+}
+
+/// A heart: x = 16 sin³t, y = 13 cos t − 5 cos 2t − 2 cos 3t − cos 4t (scaled by 3), smooth
+/// (its dip at the top is a concave stretch; the tip at the bottom is rounded by the sampling).
+pub fn heart() -> Contour {
+    let m = 64;
+    let pts: Vec<(f64, f64)> = (0..m)
+        .map(|k| k as f64 * TAU / m as f64)
+        .map(|t| (3.0 * 16.0 * t.sin().powi(3), 3.0 * (13.0 * t.cos() - 5.0 * (2.0 * t).cos() - 2.0 * (3.0 * t).cos() - (4.0 * t).cos())))
+        .collect();
+    // Counter-clockwise with its first anchor at the top dip.
+    let mut pts = pts;
+    pts.reverse();
+    smooth(&pts)
+}
+
+/// A five-pointed star with rounded tips: r = 50(1 + 0.3 cos 5θ)^... sampled smoothly.
+pub fn rounded_star() -> Contour {
+    polar(100, |t| 50.0 * (1.0 + 0.28 * (5.0 * t).cos().powi(3)))
+}
+
+/// An L-shaped hexagon (one reflex corner).
+pub fn l_shape() -> Contour {
+    polyline(&[(0.0, 0.0), (80.0, 0.0), (80.0, 40.0), (40.0, 40.0), (40.0, 80.0), (0.0, 80.0)])
+}
+
+/// An arrow-head quadrilateral (a dart: one reflex corner).
+pub fn dart() -> Contour {
+    polyline(&[(0.0, 0.0), (60.0, 20.0), (0.0, 40.0), (15.0, 20.0)])
+}
+
+/// The browser app's bundled "Pebble" (uxp-panel/samples/samples.js), y flipped to y-up.
+pub fn pebble() -> Contour {
+    let seg = [
+        [(20.0, 62.0), (18.0, 30.0), (52.0, 12.0), (88.0, 16.0)],
+        [(88.0, 16.0), (122.0, 20.0), (152.0, 30.0), (150.0, 62.0)],
+        [(150.0, 62.0), (148.0, 92.0), (126.0, 106.0), (96.0, 100.0)],
+        [(96.0, 100.0), (76.0, 96.0), (62.0, 108.0), (44.0, 104.0)],
+        [(44.0, 104.0), (26.0, 100.0), (21.0, 82.0), (20.0, 62.0)],
+    ];
+    let p = |q: (f64, f64)| Point::new(q.0, -q.1);
+    let m = seg.len();
+    let knots = (0..m).map(|i| Knot { anchor: p(seg[i][0]), left: p(seg[(i + m - 1) % m][2]), right: p(seg[i][1]) }).collect();
+    Contour::new(knots, 0).unwrap()
+}
+
+/// A 1:2 ellipse (semi-axes 30 across, 60 up) through 96 points, first anchor at (30, 0) on its
+/// flattest stretch, with a smooth dent there of depth `depth` relative to its height (120): the
+/// radius drops by `depth · 120 · exp(−(θ/0.25)²)`, θ in (−π, π]. Symmetric about the x axis.
+pub fn dented_ellipse(depth: f64) -> Contour {
+    polar(96, |t| {
+        let r = 1.0 / ((t.cos() / 30.0).powi(2) + (t.sin() / 60.0).powi(2)).sqrt();
+        let d = if t > std::f64::consts::PI { t - TAU } else { t };
+        r - depth * 120.0 * (-(d / 0.25).powi(2)).exp()
+    })
+}
+
+/// Whether an outline turns clockwise somewhere (a concave stretch), from 64 points per segment.
+pub fn has_concave_stretch(c: &Contour) -> bool {
+    use kurbo::ParamCurve;
+    let pts: Vec<Point> = c.segments().flat_map(|s| (0..64).map(move |k| s.eval(k as f64 / 64.0))).collect();
+    let m = pts.len();
+    let turn = |k: usize| {
+        let (a, b, d) = (pts[(k + m - 1) % m], pts[k], pts[(k + 1) % m]);
+        (b.x - a.x) * (d.y - b.y) - (b.y - a.y) * (d.x - b.x)
+    };
+    let ccw = c.signed_area() > 0.0;
+    (0..m).any(|k| if ccw { turn(k) < 0.0 } else { turn(k) > 0.0 })
+}
+
+/// `c` mirrored in the y axis (x → −x): glued to `c` at offset 0 the two flat pieces coincide.
+pub fn mirrored(c: &Contour) -> Contour {
+    c.transformed(Affine::scale_non_uniform(-1.0, 1.0))
+}
