@@ -10,6 +10,7 @@
 //! {"op": "pathFromSvg", "d": "M 0 0 L 10 0 ..."}
 //! {"op": "pathToSvg", "path": {...}}
 //! {"op": "DEFAULT_ACCURACY"}
+//! {"op": "defaults"}
 //! ```
 //!
 //! The answer is the function's result exactly as the WASM build returns it to JavaScript, or
@@ -30,6 +31,7 @@ pub const OPERATIONS: &[&str] = &[
     "pathFromSvg",
     "pathToSvg",
     "DEFAULT_ACCURACY",
+    "defaults",
 ];
 
 /// Reads argument `name` of the request as the DTO the core expects. A missing required
@@ -80,6 +82,7 @@ pub fn call(op: &str, request: &Map<String, Value>) -> Result<Value, Error> {
         "pathFromSvg" => out(api::svg::path_from_svg(&arg::<String>(request, "d")?)?),
         "pathToSvg" => out(api::svg::path_to_svg(&arg(request, "path")?)?),
         "DEFAULT_ACCURACY" => out(dformer::DEFAULT_ACCURACY),
+        "defaults" => out(api::defaults()),
         other => Err(Error::Shape {
             detail: format!(
                 "unknown operation `{other}`; this build knows: {}",

@@ -62,7 +62,7 @@ test('pivots: centre keeps the bounding-box centre, a point stays fixed, centroi
 const throws = (fn, re, what) => assert.throws(fn, (e) => e instanceof Error && re.test(e.message), what);
 
 test('bad options and inputs throw specific errors', () => {
-  throws(() => m.normalize([egg], {}), /Expected at least 2 closed paths to normalize, got 1/, 'one path');
+  throws(() => m.normalize([egg], {}), /Expected at least 2 closed paths to normalize, or 1 with a number as the target perimeter, got 1/, 'one path');
   throws(() => m.normalize([], {}), /got 0/, 'no paths');
   throws(() => m.normalize([egg, square], { target: 'bigest' }), /Option `target`: must be "largest", "smallest", "mean", "first" or a perimeter .*got "bigest"/, 'unknown target');
   throws(() => m.normalize([egg, square], { target: 0 }), /Option `target`.*got 0/, 'zero target');

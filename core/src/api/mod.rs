@@ -3,12 +3,14 @@
 //! thin shells around these functions; no kurbo type crosses this boundary.
 
 pub mod connect;
+pub mod defaults;
 pub mod normalize;
 pub mod path;
 pub mod simulate;
 pub mod svg;
 pub mod value;
 
+pub use defaults::defaults;
 pub use normalize::normalize;
 pub use svg::{path_from_svg, path_to_svg};
 
