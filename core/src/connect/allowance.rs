@@ -7,8 +7,10 @@
 //! concave corner they are cut where they cross. Holes, teeth, leaves and slots are placed from
 //! the seam line, which is returned as `seam` so hosts can score it.
 //!
-//! An allowance wider than the tightest concave bend would make the cut line loop over itself
-//! (the offset of a curve of radius `r` has a cusp at `a = r`): that is refused.
+//! An allowance wider than the tightest concave bend (or half a narrow gap) would make the cut
+//! line loop over itself (the offset of a curve of radius `r` has a cusp at `a = r`): that is
+//! refused, found as a crossing of the cut line with itself or as a point of it closer than the
+//! allowance to the seam line (sampled at 9 points per segment).
 
 use super::edge::Builder;
 use super::options::Settings;
@@ -17,7 +19,7 @@ use super::spacing::locate_many;
 use super::warnings;
 use crate::contour::Contour;
 use crate::error::{len, Error, Result};
-use kurbo::CubicBez;
+use kurbo::{CubicBez, ParamCurve};
 
 /// The seam line of `piece` moved out by the allowance (walking direction), and its segments.
 pub fn outline(piece: &Walked, set: &Settings) -> (Contour, Vec<CubicBez>, Vec<usize>) {
@@ -38,8 +40,13 @@ pub fn check(piece: &Walked, set: &Settings, segs: &[CubicBez]) -> Result<()> {
     if set.allowance == 0.0 {
         return Ok(());
     }
+    // A cut line that folds over itself either crosses itself or (where the folds lie on top of
+    // each other) comes back closer to the seam line than the allowance: both are caught.
     let tags = vec![0; segs.len()];
-    if !warnings::collisions(segs, &tags, 8).is_empty() {
+    let seam = warnings::Edge::new(piece.contour.segments().collect());
+    let near = 0.999 * set.allowance;
+    let folds = segs.iter().any(|c| (0..=8).any(|j| seam.distance_below(c.eval(j as f64 / 8.0), near).is_some()));
+    if folds || !warnings::collisions(segs, &tags, 8).is_empty() {
         return Err(Error::Infeasible {
             reason: format!(
                 "A seam allowance of {} makes the cut line of the {} cross itself (the outline bends tighter than that somewhere, or has a narrow neck): use a smaller allowance.",

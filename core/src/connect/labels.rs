@@ -94,7 +94,10 @@ pub struct Obstacles<'a> {
 
 /// Places one label: from its station point `base`, along the unit direction `dir` (into the
 /// piece, or out with inverted holes), at nominal `depth` and `size`; `placed` are the boxes of
-/// labels already placed. Returns the centre, size and whether it is clear.
+/// labels already placed. With `before`, the depth of the near side of the connector's hole, a
+/// label may also go between the edge and its hole when it fits there. Returns the centre,
+/// size and whether it is clear.
+#[allow(clippy::too_many_arguments)]
 pub fn place(
     base: Point,
     dir: Vec2,
@@ -102,14 +105,20 @@ pub fn place(
     chars: usize,
     depth: f64,
     size: f64,
+    before: Option<f64>,
     placed: &[LabelBox],
     obstacles: &Obstacles,
     scratch: &mut Vec<usize>,
 ) -> (Point, f64, bool) {
+    let along = dir.turn_90().normalize();
     for scale in [1.0, 0.8, 0.64, 0.5, 0.4] {
         let h = size * scale;
-        for extra in [0.0, 0.5, 1.0, 1.5] {
-            let at = base + dir * (depth + extra * h);
+        let inner = before.map(|b| b - 0.6 * h).filter(|&d| d > 0.6 * h);
+        let tries = [(0.0, 0.0), (0.5, 0.0), (1.0, 0.0), (0.0, 0.6), (0.0, -0.6), (0.5, 0.6), (0.5, -0.6), (1.5, 0.0), (1.0, 1.0), (1.0, -1.0)]
+            .map(|(extra, slide)| (depth + extra * h, slide));
+        let inside = inner.map(|d| [(d, 0.0), (d, 0.6), (d, -0.6)]).unwrap_or_default();
+        for (d, slide) in tries.into_iter().chain(inside) {
+            let at = base + dir * d + along * (slide * h);
             let b = LabelBox::new(at, angle, h, chars);
             let clear = obstacles.edge.contains(at) == obstacles.inside
                 && !b.meets_edge(obstacles.edge, scratch)

@@ -119,11 +119,17 @@ fn annotate(
     let mut crowded = Vec::new();
     let mut scratch = Vec::new();
     for (k, st) in stations.iter().enumerate() {
+        // The mitre direction at a corner, at unit length: a corner's label goes as deep as its
+        // hole (which is `inset` from both sides, `|n|·inset` from the corner) plus the usual gap.
         let n = piece.inward_at(st);
+        let m = n.hypot();
         let text = (k + 1).to_string();
         let angle = circle::readable_angle(piece.along(n));
+        let hole = set.kind.has_holes().then_some(set.inset * m);
+        let d = depth + hole.map_or(0.0, |h| h - set.inset);
+        let before = hole.map(|h| h - 0.5 * set.diameter);
         let (at, h, clear) =
-            labels::place(st.point, n * side, angle, text.len(), depth, size, &boxes, obstacles, &mut scratch);
+            labels::place(st.point, n / m * side, angle, text.len(), d, size, before, &boxes, obstacles, &mut scratch);
         if !clear {
             crowded.push(text.clone());
         }
@@ -178,15 +184,62 @@ fn auto_slide(pieces: &[Walked; 2], raw: &RawOptions, set: &Settings) -> f64 {
     if raw.slide.is_some() || set.kind == Kind::Teeth {
         return set.slide;
     }
-    let good = match set.kind {
-        Kind::Leaves => 0.5 * leaves::WIDTH * set.pitch,
-        _ => set.inset,
-    }
-    .min(0.5 * set.pitch);
     let corners = [phase::corners(&pieces[0]), phase::corners(&pieces[1])];
+    if corners.iter().all(Vec::is_empty) {
+        return set.slide;
+    }
     let first = [set.start[0] + set.slide * set.pitch, set.start[1] + set.slide * set.pitch];
-    let delta = phase::shift(first, [&corners[0], &corners[1]], set.pitch, good);
+    let cs = [&corners[0][..], &corners[1][..]];
+    let delta = if set.kind == Kind::Leaves {
+        phase::shift(first, cs, set.pitch, (0.5 * leaves::WIDTH * set.pitch).min(0.5 * set.pitch))
+    } else {
+        let r = 0.5 * set.diameter;
+        // As clear as on a straight edge: neighbours a pitch apart, the inset from the edge.
+        let good = 0.999 * (set.pitch - 2.0 * r).min(set.inset - r);
+        let edges = [warnings::Edge::new(pieces[0].contour.segments().collect()), warnings::Edge::new(pieces[1].contour.segments().collect())];
+        let clearance = |delta: f64| {
+            let mut worst = f64::INFINITY;
+            for (i, w) in pieces.iter().enumerate() {
+                // Only connectors within two pitches of a corner can be worse than on a straight edge.
+                let near: Vec<f64> = corners[i]
+                    .iter()
+                    .flat_map(|&c| {
+                        let k0 = ((c - first[i] - delta) / set.pitch).floor();
+                        (-2..=3).map(move |j| first[i] + delta + (k0 + j as f64) * set.pitch)
+                    })
+                    .collect();
+                let st = locate_many(&w.table, &near);
+                let centers = stitch::centers(w, &st, set);
+                for (j, c) in centers.iter().enumerate() {
+                    let d = edges[i].distance_below(*c, set.inset).unwrap_or(set.inset);
+                    // A centre on the wrong side of the edge is worse than any crossing.
+                    let d = if edges[i].contains(*c) == !set.invert { d } else { -d - set.inset };
+                    worst = worst.min(d - r);
+                    if j % 6 != 5 {
+                        worst = worst.min((centers[j + 1] - *c).hypot() - 2.0 * r);
+                    }
+                }
+            }
+            worst
+        };
+        phase::best(&phase::candidates(first, cs, set.pitch), set.pitch, good, clearance)
+    };
     (set.slide + delta / set.pitch).rem_euclid(1.0)
+}
+
+/// Stitch holes without a given slide: a hole on every corner when the spacing allows
+/// ([`phase::on_corners`]), as arc lengths from the start.
+fn corner_positions(pieces: &[Walked; 2], raw: &RawOptions, set: &Settings) -> Option<Vec<f64>> {
+    if raw.slide.is_some() || set.kind != Kind::Stitch {
+        return None;
+    }
+    let corners = [phase::corners(&pieces[0]), phase::corners(&pieces[1])];
+    let square = std::f64::consts::FRAC_PI_2 + 1e-6;
+    let sharp = pieces.iter().any(|w| !phase::corners_turning(w, square, std::f64::consts::PI).is_empty());
+    if sharp {
+        return None;
+    }
+    phase::on_corners([set.start[0], set.start[1]], [&corners[0], &corners[1]], pieces[0].perimeter(), set.count)
 }
 
 /// Places paired connectors on two closed pieces `a` and `b` of equal perimeter.
@@ -200,11 +253,18 @@ pub fn connect(a: &Contour, b: &Contour, raw: &RawOptions) -> Result<Connection>
     }
     let mut set = options::resolve(raw, pa)?;
     check_feasible(&set)?;
-    set.slide = auto_slide(&pieces, raw, &set);
+    let snapped = corner_positions(&pieces, raw, &set);
+    set.slide = match &snapped {
+        Some(u) => u[0] / set.pitch,
+        None => auto_slide(&pieces, raw, &set),
+    };
     let mut warnings = Vec::new();
     let mut outs = Vec::with_capacity(2);
     for w in &pieces {
-        let connectors = connector_positions(set.start[w.index], set.slide, w.perimeter(), set.count);
+        let connectors = match &snapped {
+            Some(u) => u.iter().map(|&x| set.start[w.index] + x).collect(),
+            None => connector_positions(set.start[w.index], set.slide, w.perimeter(), set.count),
+        };
         let stations = locate_many(&w.table, &connectors);
         // The cut line with a seam allowance, refused when it crosses itself.
         let cut = if set.allowance > 0.0 {
