@@ -312,6 +312,7 @@ pub fn connect(
         invert: Some(a.invert),
         kerf: len("kerf", &a.kerf)?,
         accuracy: None,
+        labels: Some(!a.no_labels),
     };
     let result = api::connect::connect(&paths, &options).map_err(|e| e.to_string())?;
     let hairline = laser::HAIRLINE_PX / file.scale.px_per_user;

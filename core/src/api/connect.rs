@@ -43,6 +43,9 @@ pub struct ConnectOptionsDto {
     pub kerf: Option<f64>,
     #[serde(default)]
     pub accuracy: Option<f64>,
+    /// `false` when the host draws no numbers: `labels` come back empty and unwarned.
+    #[serde(default)]
+    pub labels: Option<bool>,
 }
 
 impl From<&ConnectOptionsDto> for RawOptions {
@@ -62,6 +65,7 @@ impl From<&ConnectOptionsDto> for RawOptions {
             invert: o.invert,
             kerf: o.kerf,
             accuracy: o.accuracy,
+            labels: o.labels,
         }
     }
 }

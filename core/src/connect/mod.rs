@@ -178,10 +178,11 @@ fn check_feasible(set: &Settings) -> Result<()> {
     Ok(())
 }
 
-/// The slide that keeps connectors clear of the corners of both pieces when the user gave none
+/// The slide that keeps connectors clear of the corners of both pieces when the user gave
+/// neither a slide nor a start (a connector placed by the user stays where it was put)
 /// ([`phase`]); teeth keep the user's (their gaps and teeth both meet corners anyway).
 fn auto_slide(pieces: &[Walked; 2], raw: &RawOptions, set: &Settings) -> f64 {
-    if raw.slide.is_some() || set.kind == Kind::Teeth {
+    if raw.slide.is_some() || raw.start.is_some() || set.kind == Kind::Teeth {
         return set.slide;
     }
     let corners = [phase::corners(&pieces[0]), phase::corners(&pieces[1])];
@@ -230,7 +231,7 @@ fn auto_slide(pieces: &[Walked; 2], raw: &RawOptions, set: &Settings) -> f64 {
 /// Stitch holes without a given slide: a hole on every corner when the spacing allows
 /// ([`phase::on_corners`]), as arc lengths from the start.
 fn corner_positions(pieces: &[Walked; 2], raw: &RawOptions, set: &Settings) -> Option<Vec<f64>> {
-    if raw.slide.is_some() || set.kind != Kind::Stitch {
+    if raw.slide.is_some() || raw.start.is_some() || set.kind != Kind::Stitch {
         return None;
     }
     let corners = [phase::corners(&pieces[0]), phase::corners(&pieces[1])];
@@ -312,7 +313,11 @@ pub fn connect(a: &Contour, b: &Contour, raw: &RawOptions) -> Result<Connection>
         let discs: Vec<(Point, f64)> = holes.iter().map(|h| (h.center, 0.5 * h.diameter)).collect();
         let slot_boxes: Vec<labels::LabelBox> = slots.iter().map(|s| s.bounds()).collect();
         let obstacles = labels::Obstacles { holes: &discs, slots: &slot_boxes, edge: &edge, inside: label_side > 0.0 };
-        let (labels, marks, crowded) = annotate(w, &stations, &set, label_side, &obstacles);
+        let (mut labels, marks, mut crowded) = annotate(w, &stations, &set, label_side, &obstacles);
+        if raw.labels == Some(false) {
+            labels.clear();
+            crowded.clear();
+        }
         if !crowded.is_empty() {
             warnings.push(format!(
                 "On the {}, the numbers of connectors {} do not fit clear of the holes, slots and edge even at {} of their size: they are drawn small and may touch; use fewer connectors or switch the numbers off.",

@@ -7,7 +7,7 @@
 //! | option     | default                         | kinds                 |
 //! |------------|---------------------------------|-----------------------|
 //! | `kind`     | `"stitch"`                      |                       |
-//! | `slide`    | `0` (connector 0 exactly at `start`) |                  |
+//! | `slide`    | `0`, shifted clear of corners when neither `slide` nor `start` is given ([`super::phase`]) | |
 //! | `start`    | `[0, 0]` (the first anchors)    |                       |
 //! | `diameter` | `p / 4`                         | stitch, hybrid        |
 //! | `inset`    | `p / 2` (stitch), `length / 2 + p / 2` (hybrid) | stitch, hybrid |
@@ -134,6 +134,8 @@ pub struct RawOptions {
     pub invert: Option<bool>,
     pub kerf: Option<f64>,
     pub accuracy: Option<f64>,
+    /// `false`: the host draws no numbers, so none are laid out or warned about.
+    pub labels: Option<bool>,
 }
 
 /// Checked options with every default filled in, for a seam of known perimeter.

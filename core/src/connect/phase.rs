@@ -3,7 +3,7 @@
 //! A hole `d` along the edge before a corner and `i` into the piece is only `d` (not `i`) from the
 //! edge after a square corner, so holes just beside a corner bunch up and cross the edge; on the
 //! corner itself the mitre keeps the inset from both sides ([`super::piece::Walked::inward_at`]).
-//! When the user gives no `slide`, every connector on both pieces is shifted by the same `δ`
+//! When the user gives neither `slide` nor `start`, every connector on both pieces is shifted by the same `δ`
 //! (so pairing and numbering are kept). For leaves `δ` maximises the smallest arc-length
 //! distance from any corner of either piece to its nearest connector, a corner carrying a
 //! connector counting as perfectly clear; the optimum of this max–min over `δ ∈ [0, p)` is at one
