@@ -232,7 +232,12 @@ test('every bad input gets its own message', () => {
     [[egg, flat], { count: 3, diameter: 0 }, /`diameter`: must be a positive number, got 0/],
     [[egg, flat], { count: 3, inset: -2 }, /`inset`: must be a positive number, got -2/],
     [[egg, flat], { count: 3, kind: 'teeth', length: 0 }, /`length`: must be a positive number/],
-    [[egg, flat], { count: 3, kind: 'teeth', angle: 100 }, /`angle`: must be a flank angle in degrees/],
+    [[egg, flat], { count: 3, kind: 'teeth', angle: 180 }, /`angle`: must be a flank angle in degrees, more than 0 and less than 180 \(90 square, more than 90 a dovetail\), got 180/],
+    [[egg, flat], { count: 40, kind: 'teeth', angle: 170 }, /dovetails' corners collide\. At this pitch the flank angle must be between [\d.]+° and [\d.]+°/],
+    [[egg, flat], { count: 13, kind: 'leaves' }, /`count`: leaves alternate between the two pieces, so their number must be even, got 13: use 12 or 14/],
+    [[egg, flat], { count: 12, kind: 'leaves', leaf: 'knot' }, /`leaf`: must be "tab" \(glued\) or "lock"/],
+    [[egg, flat], { count: 12, allowance: -1 }, /`allowance`: must be zero or a positive distance/],
+    [[egg, flat], { count: 12, kind: 'teeth', allowance: 1 }, /teeth interlock on the seam line itself/],
     [[egg, flat], { count: 3, kerf: -0.1 }, /`kerf`: must be zero or a positive cut width/],
     [[egg, flat], { count: 3, diameter: 1, kerf: 1 }, /the holes would vanish/],
     [[egg, flat], { count: 3, start: [0, NaN] }, /`start`/],
@@ -287,4 +292,20 @@ test('a tight concave notch: teeth running into each other are reported by conne
     assert.ok(s > wall0 - r.pitch * 1.5 && s < wall1 + r.pitch * 1.5, `connector ${k} at ${s} is far from the notch [${wall0}, ${wall1}]`);
   }
   assert.ok(!r.warnings.some((s) => s.startsWith('On the second piece')), 'the plain square should not warn');
+});
+
+test('defaults(): the options every host starts from, and how sizes follow the pitch', () => {
+  const d = m.defaults();
+  const one = (name, kind, leaf) => d.options.find((o) => o.name === name && o.kinds.includes(kind) && (!o.leaf || o.leaf === leaf));
+  assert.equal(one('count', 'stitch').value, 24);
+  assert.equal(one('angle', 'teeth').value, 90);
+  assert.equal(one('leaf', 'leaves').value, 'tab');
+  assert.equal(one('allowance', 'stitch').value, 0);
+  // The derived sizes are what connect() uses when they are absent.
+  const r = m.connect([egg, flat], { count: 20 });
+  const dia = one('diameter', 'stitch').pitch * r.pitch;
+  close(r.pieces[0].holes[0].diameter, dia, 1e-12, 'default hole diameter = defaults().diameter.pitch × pitch');
+  const f = nearestExact(WA.ex, r.pieces[0].holes[0].center);
+  close(f.dist, one('inset', 'stitch').pitch * r.pitch, 1e-9, 'default inset');
+  for (const k of ['stitch', 'teeth', 'leaves', 'hybrid']) assert.ok(d.invert[k].length > 10, `invert's meaning for ${k}`);
 });

@@ -116,6 +116,10 @@
     simulate: function (pieces, options) {
       return call('simulate', [pieces, options]);
     },
+    /** The default connector options and how each is derived (the core's; no host keeps its own). */
+    defaults: function () {
+      return call('defaults', []);
+    },
     has: function (name) {
       return !!api && typeof api[name] === 'function';
     },
