@@ -8,27 +8,10 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { usePanelBrowser, waitReady } from './support.mjs';
 import { openPanel } from './cep-stand-in.mjs';
-import { referenceLength } from '../illustrator/reference-length.mjs';
+import { applyOk, items, lengthOf } from './cep-document.mjs';
 
 const panel = usePanelBrowser();
 
-function items(snapshotDoc) {
-  const out = [];
-  const walk = (list, layer, group) => {
-    for (const it of list) {
-      out.push({ ...it, layer, group });
-      if (it.items) walk(it.items, layer, it.name);
-    }
-  };
-  for (const l of snapshotDoc.layers) walk(l.items, l.name, null);
-  return out;
-}
-async function applyOk(page) {
-  await page.click('#apply-btn');
-  await page.waitForFunction(() => document.body.dataset.applied);
-  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', `apply failed: ${await page.textContent('#status')}`);
-}
-const lengthOf = (it) => referenceLength({ closed: it.closed, points: it.points.map((p) => ({ anchor: p.a, left: p.l, right: p.r })) });
 const TWO = {
   units: 'mm',
   shapes: [

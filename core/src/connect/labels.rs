@@ -95,7 +95,8 @@ pub struct Obstacles<'a> {
 /// Places one label: from its station point `base`, along the unit direction `dir` (into the
 /// piece, or out with inverted holes), at nominal `depth` and `size`; `placed` are the boxes of
 /// labels already placed. With `before`, the depth of the near side of the connector's hole, a
-/// label may also go between the edge and its hole when it fits there. Returns the centre,
+/// label may also go between the edge and its hole when it fits there; with `own`, its hole's
+/// index, it must stay nearer that hole than any other. Returns the centre,
 /// size and whether it is clear.
 #[allow(clippy::too_many_arguments)]
 pub fn place(
@@ -106,6 +107,7 @@ pub fn place(
     depth: f64,
     size: f64,
     before: Option<f64>,
+    own: Option<usize>,
     placed: &[LabelBox],
     obstacles: &Obstacles,
     scratch: &mut Vec<usize>,
@@ -120,7 +122,13 @@ pub fn place(
         for (d, slide) in tries.into_iter().chain(inside) {
             let at = base + dir * d + along * (slide * h);
             let b = LabelBox::new(at, angle, h, chars);
-            let clear = obstacles.edge.contains(at) == obstacles.inside
+            // A label stays nearest its own hole, so the numbers still say which hole is which.
+            let by_own = own.is_none_or(|k| {
+                let mine = (at - obstacles.holes[k].0).hypot();
+                obstacles.holes.iter().enumerate().all(|(j, &(c, _))| j == k || (at - c).hypot() > mine)
+            });
+            let clear = by_own
+                && obstacles.edge.contains(at) == obstacles.inside
                 && !b.meets_edge(obstacles.edge, scratch)
                 && !obstacles.holes.iter().any(|&(c, r)| b.meets_circle(c, r))
                 && !obstacles.slots.iter().any(|s| b.overlaps(s))

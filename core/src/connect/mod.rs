@@ -129,7 +129,7 @@ fn annotate(
         let d = depth + hole.map_or(0.0, |h| h - set.inset);
         let before = hole.map(|h| h - 0.5 * set.diameter);
         let (at, h, clear) =
-            labels::place(st.point, n / m * side, angle, text.len(), d, size, before, &boxes, obstacles, &mut scratch);
+            labels::place(st.point, n / m * side, angle, text.len(), d, size, before, hole.map(|_| k), &boxes, obstacles, &mut scratch);
         if !clear {
             crowded.push(text.clone());
         }
