@@ -217,7 +217,8 @@
     var norm = $('#normalize-result');
     norm.textContent = '';
     if (design && design.normalized) {
-      norm.textContent = '→ ' + fmt(design.normalized.perimeter) + '  (A ×' + design.normalized.scales[0].toFixed(4) + ', B ×' + design.normalized.scales[1].toFixed(4) + ')';
+      var sc = design.normalized.scales;
+      norm.textContent = '→ ' + fmt(design.normalized.perimeter) + '  (' + (sc.length === 1 ? '×' + sc[0].toFixed(4) : 'A ×' + sc[0].toFixed(4) + ', B ×' + sc[1].toFixed(4)) + ')';
     }
     var layers = settings.layers;
     var fieldError = Object.keys(fieldErrors).map(function (k) { return fieldErrors[k]; }).join(' ');
