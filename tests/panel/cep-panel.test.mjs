@@ -31,6 +31,9 @@ test('select two shapes, normalize, add stitching, apply: equal perimeters and p
   await page.selectOption('#norm-target', 'largest');
   await page.click('#kind button[data-kind="stitch"]');
   await page.fill('#count', '20');
+  // Sizes are automatic (the core's fractions of the pitch) unless typed: type the ones checked below.
+  await page.fill('#inset', '4');
+  await page.fill('#diameter', '2');
   await page.waitForFunction(() => /^20 connectors/.test(document.querySelector('#stats').textContent));
   const previewHoles = await page.$$eval('#preview .hole', (h) => h.length);
   assert.equal(previewHoles, 40, `preview holes: wanted 40 (20 per piece), got ${previewHoles}`);
