@@ -163,7 +163,7 @@ fn test_issue_square_with_circle_24_holes_of_2mm_at_4mm_inset() {
 #[test]
 fn locking_leaves_labels_keep_clear_of_slots_and_edges() {
     for (name, pts) in shapes() {
-        let (pieces, sh) = with_circle(&pts);
+        let (pieces, _) = with_circle(&pts);
         let r = connect(&pieces, &ConnectOptionsDto { kind: Some("leaves".into()), leaf: Some("lock".into()), count: Some(16.0), ..Default::default() }).unwrap();
         // Leaves change the outline: labels are checked against the leafy cut line.
         let sh = [Shape::Poly(flatten(&r.pieces[0].outline, 32)), Shape::Poly(flatten(&r.pieces[1].outline, 32))];
