@@ -583,8 +583,8 @@ var DFORMER_TYPE_SIZE = [0.1, 1296];
  */
 function dformer_jobs(pc) {
   return [
-    { role: "cut", title: "connectors", count: pc.holes.length + (pc.outline ? 1 : 0) },
-    { role: "score", title: "marks", count: pc.marks.length },
+    { role: "cut", title: "connectors", count: pc.holes.length + pc.slots.length + (pc.outline ? 1 : 0) },
+    { role: "score", title: "marks", count: pc.marks.length + (pc.seam ? 1 : 0) },
     { role: "engrave", title: "labels", count: pc.labels.length }
   ];
 }
@@ -711,9 +711,11 @@ function dformer_plan(doc, req) {
     if (seenNames[pname]) dformer_fail(pw + ": two pieces are both named \"" + pname + "\".");
     seenNames[pname] = true;
     pw = pw + " (\"" + pname + "\")";
-    var piece = { name: pname, outline: /** @type {*} */ (null), holes: /** @type {Array<*>} */ ([]), marks: /** @type {Array<*>} */ ([]), labels: /** @type {Array<*>} */ ([]) };
+    var piece = { name: pname, outline: /** @type {*} */ (null), seam: /** @type {*} */ (null), holes: /** @type {Array<*>} */ ([]), slots: /** @type {Array<*>} */ ([]), marks: /** @type {Array<*>} */ ([]), labels: /** @type {Array<*>} */ ([]) };
     if (pc.outline !== undefined && pc.outline !== null) piece.outline = dformer_checkPath(pc.outline, pw + " outline", sf);
-    var lists = ["holes", "marks", "labels"];
+    // With a seam allowance: the seam line, scored so the user can fold or stitch along it.
+    if (pc.seam !== undefined && pc.seam !== null) piece.seam = dformer_checkPath(pc.seam, pw + " seam", sf);
+    var lists = ["holes", "slots", "marks", "labels"];
     for (var li = 0; li < lists.length; li++) {
       var lv = pc[lists[li]];
       if (lv === undefined || lv === null) lv = [];
@@ -724,6 +726,9 @@ function dformer_plan(doc, req) {
       var hp = holes[h] && holes[h].path && !holes[h].points ? holes[h].path : holes[h];
       piece.holes.push(dformer_checkPath(hp, pw + " holes[" + h + "]", sf));
     }
+    // Slots that receive the other piece's locking leaves: cuts, like holes.
+    var slots = pc.slots || [];
+    for (var sl = 0; sl < slots.length; sl++) piece.slots.push(dformer_checkPath(slots[sl], pw + " slots[" + sl + "]", sf));
     var marks = pc.marks || [];
     for (var m = 0; m < marks.length; m++) piece.marks.push(dformer_checkPath(marks[m], pw + " marks[" + m + "]", sf));
     var labels = pc.labels || [];
@@ -742,8 +747,8 @@ function dformer_plan(doc, req) {
         angle: lb.angle === undefined || lb.angle === null ? 0 : dformer_finite(lb.angle, lw + " angle"), size: size / sf
       });
     }
-    if (piece.outline || piece.holes.length) layers.cut.needed = true;
-    if (piece.marks.length) layers.score.needed = true;
+    if (piece.outline || piece.holes.length || piece.slots.length) layers.cut.needed = true;
+    if (piece.marks.length || piece.seam) layers.score.needed = true;
     if (piece.labels.length) layers.engrave.needed = true;
     pieces.push(piece);
   }
@@ -992,8 +997,10 @@ function dformer_write(doc, plan) {
         if (jobs[j].role === "cut") {
           if (pc.outline) { dformer_draw(group, pc.outline, "outline", style); created++; }
           for (i = 0; i < pc.holes.length; i++) { dformer_draw(group, pc.holes[i], "hole " + (i + 1), style); created++; }
+          for (i = 0; i < pc.slots.length; i++) { dformer_draw(group, pc.slots[i], "slot " + (i + 1), style); created++; }
         } else if (jobs[j].role === "score") {
           for (i = 0; i < pc.marks.length; i++) { dformer_draw(group, pc.marks[i], i === 0 ? "start mark" : "mark " + (i + 1), style); created++; }
+          if (pc.seam) { dformer_draw(group, pc.seam, "seam line", style); created++; }
         } else {
           for (i = 0; i < pc.labels.length; i++) { dformer_label(group, pc.labels[i], "label " + (i + 1), style); created++; }
         }

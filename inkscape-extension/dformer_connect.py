@@ -24,23 +24,32 @@ class Connect(DformerEffect):
         add("--spacing", default="count", help="count (a number of connectors) or pitch (a distance)")
         add("--count", type=int, default=24, help="Number of connectors on each piece")
         add("--pitch", type=float, default=10.0, help="Distance between connectors along the edge (rounded to divide the perimeter)")
-        add("--slide", type=float, default=0.0, help="Shift of every connector, as a fraction of the pitch (0-1)")
+        add("--slide", type=float, default=0.0, help="Shift of every connector, as a fraction of the pitch (0-1; with both starts 0 too: automatic, clear of corners)")
         add("--start_a", type=float, default=0.0, help="Connector 1 on piece A: distance along A from its first node")
         add("--start_b", type=float, default=0.0, help="Connector 1 on piece B: distance along B from its first node")
         add("--diameter", type=float, default=0.0, help="Hole diameter (0: a quarter of the pitch)")
         add("--inset", type=float, default=0.0, help="Edge to hole centre (0: automatic)")
         add("--length", type=float, default=0.0, help="Tooth or leaf length (0: automatic)")
-        add("--angle", type=float, default=90.0, help="Tooth flank angle in degrees (90: square)")
-        add("--invert", type=inkex.Boolean, default=False, help="Connectors on the other side of the edge")
+        add("--angle", type=float, default=90.0, help="Tooth flank angle in degrees (90: square; more: dovetails that lock)")
+        add("--leaf", default="tab", help="Leaves: tab (glued) or lock (a head on a neck, held in a slot in the other piece)")
+        add("--allowance", type=float, default=0.0, help="Seam allowance: the cut line moves out by this much (stitch, leaves)")
+        add("--invert", type=inkex.Boolean, default=False, help="Stitch: holes outside; teeth: swap teeth and gaps; leaves: swap which piece carries each leaf")
         add("--kerf", type=float, default=0.0, help="Laser kerf to compensate (cut width)")
         add("--labels", type=inkex.Boolean, default=True, help="Engrave connector numbers")
-        add("--label_size", type=float, default=0.0, help="Number height (0: 40% of the pitch)")
+        add("--label_size", type=float, default=0.0, help="Number height (0: as large as fits clear of holes, slots and edge)")
 
     def core_options(self):
         """The core's connect options, lengths converted to user units; 0 = the core's default."""
         o = self.options
-        opts = {"kind": o.kind, "slide": o.slide, "invert": o.invert, "angle": o.angle,
-                "kerf": self.to_user(o.kerf), "start": [self.to_user(o.start_a), self.to_user(o.start_b)]}
+        opts = {"kind": o.kind, "invert": o.invert, "angle": o.angle, "leaf": o.leaf, "kerf": self.to_user(o.kerf)}
+        # Slide and start both 0: the core places the connectors clear of the corners.
+        if o.slide != 0 or o.start_a != 0 or o.start_b != 0:
+            opts["slide"] = o.slide
+            opts["start"] = [self.to_user(o.start_a), self.to_user(o.start_b)]
+        if not o.labels:
+            opts["labels"] = False
+        if o.allowance != 0:
+            opts["allowance"] = self.to_user(o.allowance)
         if o.spacing == "pitch":
             opts["pitch"] = self.to_user(o.pitch)
         else:
@@ -55,11 +64,18 @@ class Connect(DformerEffect):
         shapes = self.pieces()
         pieces = read_pieces(shapes)
         result = call("connect", pieces=pieces, options=self.core_options())
-        outlines_change = self.options.kind != "stitch"
+        # With a seam allowance the outline is the cut line and the seam line is scored.
+        outlines_change = self.options.kind != "stitch" or any("seam" in r for r in result["pieces"])
         outline_d = path_data([r["outline"] for r in result["pieces"]], shapes) if outlines_change else None
-        holes = [path_data([h["path"] for h in r["holes"]], [None] * len(r["holes"])) for r in result["pieces"]]
-        marks = [path_data(r["marks"], [None] * len(r["marks"])) for r in result["pieces"]]
-        size = self.to_user(self.options.label_size) if self.options.label_size > 0 else 0.4 * result["pitch"]
+
+        def data(paths):
+            return path_data(paths, [None] * len(paths))
+
+        holes = [data([h["path"] for h in r["holes"]]) for r in result["pieces"]]
+        slots = [data(r.get("slots", [])) for r in result["pieces"]]
+        marks = [data(r["marks"]) for r in result["pieces"]]
+        seams = [data([r["seam"]] if "seam" in r else []) for r in result["pieces"]]
+        size = self.to_user(self.options.label_size) if self.options.label_size > 0 else None
         names = ("A", "B")
 
         def write():
@@ -68,10 +84,14 @@ class Connect(DformerEffect):
                 title = f"Piece {names[i]} {describe(elem)}"
                 if outlines_change:
                     elem = replace_outline(elem, outline_d[i])
-                if holes[i]:
-                    add_paths(self.svg, piece_group(self.svg, "cut", pid, f"{title}: holes"), "cut", holes[i], f"dformer-hole-{pid}")
-                if marks[i]:
-                    add_paths(self.svg, piece_group(self.svg, "score", pid, f"{title}: start"), "score", marks[i], f"dformer-mark-{pid}")
+                if holes[i] or slots[i]:
+                    group = piece_group(self.svg, "cut", pid, f"{title}: {'slots' if slots[i] else 'holes'}")
+                    add_paths(self.svg, group, "cut", holes[i], f"dformer-hole-{pid}")
+                    add_paths(self.svg, group, "cut", slots[i], f"dformer-slot-{pid}")
+                if marks[i] or seams[i]:
+                    group = piece_group(self.svg, "score", pid, f"{title}: start{' and seam line' if seams[i] else ''}")
+                    add_paths(self.svg, group, "score", marks[i], f"dformer-mark-{pid}")
+                    add_paths(self.svg, group, "score", seams[i], f"dformer-seam-{pid}")
                 if self.options.labels:
                     group = piece_group(self.svg, "engrave", pid, f"{title}: numbers")
                     add_labels(group, result["pieces"][i]["labels"], size, f"dformer-label-{pid}")

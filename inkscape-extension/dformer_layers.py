@@ -71,8 +71,9 @@ def add_paths(svg, group, kind, path_data, id_prefix):
 
 
 def add_labels(group, labels, font_size, id_prefix):
-    """Engraved numbers: ``{text, at: [x, y], angle}`` from the core, ``angle`` in degrees
-    along the edge (already turned so the text reads upright)."""
+    """Engraved numbers: ``{text, at: [x, y], angle, size}`` from the core, ``angle`` in degrees
+    along the edge (already turned so the text reads upright). ``font_size`` None: each
+    label's own ``size`` (the core's, clear of holes, slots and the cut line)."""
     _, colour = LAYERS["engrave"]
     for k, label in enumerate(labels):
         x, y = label["at"]
@@ -83,7 +84,7 @@ def add_labels(group, labels, font_size, id_prefix):
         text.set("transform", f"rotate({label['angle']:.6f} {x:.6f} {y:.6f})")
         text.style = inkex.Style(
             {
-                "font-size": f"{font_size:.6g}",
+                "font-size": f"{(font_size if font_size else label['size']):.6g}",
                 "font-family": "sans-serif",
                 "text-anchor": "middle",
                 "dominant-baseline": "central",

@@ -384,16 +384,27 @@ pub struct ConnectArgs {
     /// Tooth or leaf length.
     #[arg(long, allow_hyphen_values = true)]
     pub length: Option<String>,
-    /// Tooth flank angle in degrees (90 = square).
+    /// Tooth flank angle in degrees: 90 = square, less = tapered, more than 90 = dovetails that
+    /// widen toward their tips and lock the pieces together (default: the core's, 90).
     #[arg(long, allow_negative_numbers = true)]
     pub angle: Option<f64>,
-    /// Connectors on the other side of the edge.
+    /// Leaves: tab (a rounded flap to glue) or lock (a head on a neck, held in a slot cut in
+    /// the other piece).
+    #[arg(long)]
+    pub leaf: Option<String>,
+    /// Seam allowance (stitch, leaves): the cut line moves out by this much, e.g. 3mm; the seam
+    /// line is scored.
+    #[arg(long, allow_hyphen_values = true)]
+    pub allowance: Option<String>,
+    /// Stitch: holes outside the piece. Teeth: swap teeth and gaps. Leaves: swap which piece
+    /// carries each leaf.
     #[arg(long)]
     pub invert: bool,
     /// Laser kerf to compensate (cut width).
     #[arg(long, allow_hyphen_values = true)]
     pub kerf: Option<String>,
-    /// Height of the engraved numbers (default 40% of the pitch).
+    /// Height of the engraved numbers (default: each number as large as fits clear of the
+    /// holes, slots and cut line, as the core sizes it).
     #[arg(long, allow_hyphen_values = true)]
     pub label_size: Option<String>,
     /// Do not engrave connector numbers.
@@ -424,9 +435,14 @@ pub fn connect(
         }
         None => None,
     };
+    // Neither count nor pitch: the core's default count, as in every host.
+    let count = match (a.count, &a.pitch) {
+        (None, None) => Some(dformer::connect::options::DEFAULT_COUNT as f64),
+        (c, _) => c,
+    };
     let options = ConnectOptionsDto {
         kind: Some(a.kind.clone()),
-        count: a.count,
+        count,
         pitch: len("pitch", &a.pitch)?,
         slide: a.slide,
         start,
@@ -434,17 +450,20 @@ pub fn connect(
         diameter: len("diameter", &a.diameter)?,
         length: len("length", &a.length)?,
         angle: a.angle,
+        leaf: a.leaf.clone(),
+        allowance: len("allowance", &a.allowance)?,
         invert: Some(a.invert),
         kerf: len("kerf", &a.kerf)?,
         accuracy: None,
+        labels: Some(!a.no_labels),
     };
     let result = api::connect::connect(&paths, &options).map_err(|e| e.to_string())?;
     let hairline = laser::HAIRLINE_PX / file.scale.px_per_user;
     // The core's results are in the display unit; the layers are drawn in root user units.
     let from_display = to_display(file).inverse();
     let font = match len("label-size", &a.label_size)? {
-        None => 0.4 * result.pitch,
-        Some(size) if size.is_finite() && size > 0.0 => size,
+        None => None,
+        Some(size) if size.is_finite() && size > 0.0 => Some(size),
         Some(_) => {
             return Err(format!(
                 "--label-size: must be a positive length, got {}",
@@ -456,7 +475,7 @@ pub fn connect(
     let mut groups = Vec::new();
     for (i, (s, piece)) in shapes.iter().zip(&result.pieces).enumerate() {
         let title = format!("Piece {} {}", ["A", "B"][i], s.name);
-        if a.kind != "stitch" {
+        if a.kind != "stitch" || piece.seam.is_some() {
             replace_outline(source, file, s, &piece.outline, &mut edits)?;
         }
         let svg_of = |paths: Vec<&PathDto>| {
@@ -468,9 +487,12 @@ pub fn connect(
                 .collect::<Result<Vec<_>, _>>()
         };
         let holes = svg_of(piece.holes.iter().map(|h| &h.path).collect())?;
+        let slots = svg_of(piece.slots.iter().collect())?;
         let marks = svg_of(piece.marks.iter().collect())?;
-        if !holes.is_empty() {
-            let body = laser::paths("cut", &format!("dformer-hole-{}", s.key), &holes, hairline);
+        let seam = svg_of(piece.seam.iter().collect())?;
+        if !holes.is_empty() || !slots.is_empty() {
+            let mut body = laser::paths("cut", &format!("dformer-hole-{}", s.key), &holes, hairline);
+            body += &laser::paths("cut", &format!("dformer-slot-{}", s.key), &slots, hairline);
             groups.push(Group {
                 layer: "cut",
                 piece_key: s.key.clone(),
@@ -478,13 +500,14 @@ pub fn connect(
                 body,
             });
         }
-        if !marks.is_empty() {
-            let body = laser::paths(
+        if !marks.is_empty() || !seam.is_empty() {
+            let mut body = laser::paths(
                 "score",
                 &format!("dformer-mark-{}", s.key),
                 &marks,
                 hairline,
             );
+            body += &laser::paths("score", &format!("dformer-seam-{}", s.key), &seam, hairline);
             groups.push(Group {
                 layer: "score",
                 piece_key: s.key.clone(),
@@ -498,14 +521,11 @@ pub fn connect(
                 .iter()
                 .map(|l| {
                     let at = from_display * Point::new(l.at[0], l.at[1]);
-                    (l.text.clone(), [at.x, at.y], l.angle)
+                    let size = font.unwrap_or(l.size) / file.scale.to_unit(1.0);
+                    (l.text.clone(), [at.x, at.y], l.angle, size)
                 })
                 .collect();
-            let body = laser::labels(
-                &format!("dformer-label-{}", s.key),
-                &items,
-                font / file.scale.to_unit(1.0),
-            );
+            let body = laser::labels(&format!("dformer-label-{}", s.key), &items);
             groups.push(Group {
                 layer: "engrave",
                 piece_key: s.key.clone(),
@@ -552,6 +572,37 @@ mod tests {
             .map_err(|e| e.to_string())?;
         let file = SvgFile::parse(svg, unit)?;
         connect(svg, &file, Choice::default(), &opts.connect)
+    }
+
+    /// Locking leaves put slots on the cut layer; an allowance moves the cut line and scores the
+    /// seam line; the new bad inputs are refused with their message and nothing written.
+    #[test]
+    fn slots_go_to_the_cut_layer_and_the_seam_line_to_the_score_layer() {
+        let (svg, _) = run_connect(&["--kind", "leaves", "--leaf", "lock", "--count", "8"]).unwrap();
+        let doc = roxmltree::Document::parse(&svg).unwrap();
+        let in_layer = |layer: &str, prefix: &str| {
+            doc.descendants()
+                .filter(|n| n.attribute("id").is_some_and(|i| i.starts_with(prefix)))
+                .filter(|n| n.ancestors().any(|a| a.attribute("id") == Some(&format!("dformer-{layer}-a")[..])))
+                .count()
+        };
+        // 8 leaves alternate: A carries 4 and receives B's 4 in slots.
+        assert_eq!(in_layer("cut", "dformer-slot-a-"), 4, "{svg}");
+        let (svg, _) = run_connect(&["--count", "8", "--allowance", "2"]).unwrap();
+        let doc = roxmltree::Document::parse(&svg).unwrap();
+        let seam = doc.descendants().find(|n| n.attribute("id") == Some("dformer-seam-a-1")).expect("seam line");
+        assert!(seam.ancestors().any(|a| a.attribute("id") == Some("dformer-score-a")), "seam line not on the score layer");
+        // The rect became the cut line, a path 2 mm out.
+        let a = doc.descendants().find(|n| n.attribute("id") == Some("a")).unwrap();
+        assert_eq!(a.tag_name().name(), "path", "the outline was not replaced by the cut line");
+        for (args, want) in [
+            (&["--kind", "leaves", "--count", "7"][..], "must be even, got 7: use 6 or 8"),
+            (&["--kind", "teeth", "--count", "8", "--length", "9", "--angle", "150"][..], "dovetails' corners collide"),
+            (&["--kind", "teeth", "--count", "8", "--allowance", "1"][..], "teeth interlock on the seam line itself"),
+        ] {
+            let err = run_connect(args).err().unwrap_or_default();
+            assert!(err.contains(want), "{args:?}: wanted …{want}…, got {err}");
+        }
     }
 
     #[test]

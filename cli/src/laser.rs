@@ -1,6 +1,7 @@
 //! Connectors written as laser layers, the same layout as the Inkscape extension
 //! (`inkscape-extension/dformer_layers.py`): top-level layers `D-former cut` (red hairline:
-//! holes), `D-former score` (blue hairline: start marks), `D-former engrave` (black text:
+//! holes and slots), `D-former score` (blue hairline: start marks, the seam line with an
+//! allowance), `D-former engrave` (black text:
 //! connector numbers); in each, one group per piece with id `dformer-<layer>-<piece>`, which a
 //! later run replaces.
 
@@ -53,18 +54,19 @@ pub fn paths(layer: &str, ids: &str, data: &[String], hairline_user: f64) -> Str
         .collect()
 }
 
-/// `<text>` children: number `text` centred at `at`, turned by `angle` degrees.
-pub fn labels(ids: &str, items: &[(String, [f64; 2], f64)], font_size: f64) -> String {
+/// `<text>` children: number `text` centred at `at`, turned by `angle` degrees, `size` high
+/// (user units; the core sizes each label so that its box clears holes, slots and the cut line).
+pub fn labels(ids: &str, items: &[(String, [f64; 2], f64, f64)]) -> String {
     let style = format!(
-        "font-size:{font_size:.6};font-family:sans-serif;text-anchor:middle;dominant-baseline:central;fill:{};stroke:none",
+        "font-family:sans-serif;text-anchor:middle;dominant-baseline:central;fill:{};stroke:none",
         colour("engrave")
     );
     items
         .iter()
         .enumerate()
-        .map(|(k, (text, [x, y], angle))| {
+        .map(|(k, (text, [x, y], angle, size))| {
             format!(
-                "<text id=\"{}-{}\" x=\"{x:.6}\" y=\"{y:.6}\" transform=\"rotate({angle:.6} {x:.6} {y:.6})\" style=\"{style}\">{}</text>",
+                "<text id=\"{}-{}\" x=\"{x:.6}\" y=\"{y:.6}\" transform=\"rotate({angle:.6} {x:.6} {y:.6})\" style=\"font-size:{size:.6};{style}\">{}</text>",
                 escape(ids),
                 k + 1,
                 escape(text)

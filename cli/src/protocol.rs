@@ -13,6 +13,7 @@
 //! {"op": "pathToSvg", "path": {...}}
 //! {"op": "DEFAULT_ACCURACY"}
 //! {"op": "advise", "text": "… close the path …", "host": "inkscape"}
+//! {"op": "defaults"}
 //! ```
 //!
 //! Any request may say `"host": "inkscape"` (or `illustrator`, `plain`): its error message then
@@ -41,6 +42,7 @@ pub const OPERATIONS: &[&str] = &[
     "pathToSvg",
     "DEFAULT_ACCURACY",
     "advise",
+    "defaults",
 ];
 
 /// Reads argument `name` of the request as the DTO the core expects. A missing required
@@ -98,6 +100,7 @@ pub fn call(op: &str, request: &Map<String, Value>) -> Result<Value, Error> {
         "DEFAULT_ACCURACY" => out(dformer::DEFAULT_ACCURACY),
         "advise" => out(crate::advice::render(&arg::<String>(request, "text")?, &host(request)?)
             .map_err(|detail| Error::Shape { detail })?),
+        "defaults" => out(api::defaults()),
         other => Err(Error::Shape {
             detail: format!(
                 "unknown operation `{other}`; this build knows: {}",

@@ -122,9 +122,42 @@ pub fn two_significant(x: f64) -> f64 {
     if k >= 0 { (x * p).round() / p } else { (x / p).round() * p }
 }
 
+/// `x` rounded to `digits` significant digits (same printing as [`two_significant`]).
+pub fn significant(x: f64, digits: i32) -> f64 {
+    if !x.is_finite() || x == 0.0 {
+        return x;
+    }
+    let k = digits - 1 - x.abs().log10().floor() as i32;
+    if !(-22..=22).contains(&k) {
+        return x;
+    }
+    let p = 10f64.powi(k.abs());
+    if k >= 0 { (x * p).round() / p } else { (x / p).round() * p }
+}
+
+/// A length as people read it in a message: four significant digits ("55.64", "0.1235", "1235"),
+/// in the caller's unit (the core has none; hosts convert before they call).
+pub fn len(x: f64) -> String {
+    significant(x, 4).to_string()
+}
+
+/// An angle in degrees for a message, to 0.1° ("12.5").
+pub fn deg(x: f64) -> String {
+    if x.is_finite() { ((x * 10.0).round() / 10.0).to_string() } else { x.to_string() }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::two_significant;
+    use super::{deg, len, two_significant};
+
+    #[test]
+    fn message_numbers_are_rounded_for_people() {
+        for (x, want) in [(55.636085526653936, "55.64"), (0.123456, "0.1235"), (1234.56, "1235"), (8.0, "8"), (-14.173228, "-14.17")] {
+            assert_eq!(len(x), want, "len({x})");
+        }
+        assert_eq!(deg(10.04999), "10");
+        assert_eq!(deg(107.46), "107.5");
+    }
 
     #[test]
     fn two_significant_prints_two_digits() {

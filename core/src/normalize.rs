@@ -33,9 +33,14 @@ pub enum Pivot {
     Center,
     /// Centroid of the enclosed region.
     Centroid,
+    /// Each outline's first anchor (the 2016 scripts' Modify Perimeter: the first node stays).
+    Start,
     /// The same point for every outline.
     At(Point),
 }
+
+/// What `normalize` asks for, in the count error.
+pub const PIECES_WANTED: &str = "at least 2 closed paths to normalize, or 1 with a number as the target perimeter";
 
 /// Result of [`normalize`].
 #[derive(Debug, Clone, PartialEq)]
@@ -49,9 +54,12 @@ pub struct Normalized {
 
 /// Scales every contour about its pivot to the target perimeter (arc lengths to relative
 /// `accuracy`). Contours must already be validated (see [`crate::validate::check_outline`]).
+/// One outline is accepted with an explicit target perimeter (`Target::Value`); the relative
+/// targets need at least two.
 pub fn normalize(contours: &[Contour], target: Target, pivot: Pivot, accuracy: f64) -> Result<Normalized> {
-    if contours.len() < 2 {
-        return Err(Error::PieceCount { wanted: "at least 2 closed paths to normalize", got: contours.len() });
+    let single = matches!(target, Target::Value(_));
+    if contours.is_empty() || (contours.len() < 2 && !single) {
+        return Err(Error::PieceCount { wanted: PIECES_WANTED, got: contours.len() });
     }
     let perimeters: Vec<f64> = contours.iter().map(|c| ArcTable::new(c, accuracy).total()).collect();
     let target = match target {
@@ -81,6 +89,7 @@ pub fn normalize(contours: &[Contour], target: Target, pivot: Pivot, accuracy: f
                     Point::new(r.x0 / 2.0 + r.x1 / 2.0, r.y0 / 2.0 + r.y1 / 2.0)
                 }
                 Pivot::Centroid => measure::measure(c, accuracy).centroid,
+                Pivot::Start => c.knots()[0].anchor,
                 Pivot::At(p) => p,
             };
             let map = |q: Point| Point::new(o.x + s * (q.x - o.x), o.y + s * (q.y - o.y));

@@ -118,6 +118,12 @@ pub fn normalize(paths: JsValue, options: JsValue) -> Result<JsValue, JsError> {
     to_js(&api::normalize::normalize(&paths, &options).map_err(js_error)?)
 }
 
+/// `defaults()` → the default connector options and how each is derived (see `api::defaults`).
+#[wasm_bindgen]
+pub fn defaults() -> Result<JsValue, JsError> {
+    to_js(&api::defaults())
+}
+
 /// `pathFromSvg(d)` → one path per subpath of the SVG path data `d`.
 #[wasm_bindgen(js_name = pathFromSvg)]
 pub fn path_from_svg(d: JsValue) -> Result<JsValue, JsError> {

@@ -39,7 +39,9 @@ proptest! {
     #[test]
     fn never_panics(kind in kinds(), count in prop_oneof![Just(None), (0u32..200).prop_map(|c| Some(c as f64))],
                     pitch in num(), slide in num(), inset in num(), diameter in num(), length in num(),
-                    angle in prop_oneof![Just(None), (0.0f64..120.0).prop_map(Some)], kerf in num(),
+                    angle in prop_oneof![Just(None), (0.0f64..200.0).prop_map(Some)], kerf in num(),
+                    leaf in prop_oneof![Just(None), Just(Some("tab".to_string())), Just(Some("lock".to_string())), Just(Some("knot".to_string()))],
+                    allowance in num(),
                     invert in any::<bool>(), sa in -50.0f64..50.0, sb in -50.0f64..50.0, notch in any::<bool>()) {
         let (a, b) = if notch {
             // Perimeter of the notched square: 40 − 0.4 + 2·√(0.2² + 6²); match it with a square.
@@ -52,7 +54,7 @@ proptest! {
             (blob(10.0, 0.0), blob(10.0, 40.0))
         };
         let o = ConnectOptionsDto { kind, count, pitch, slide, start: Some([sa, sb]), inset, diameter, length, angle,
-                                    invert: Some(invert), kerf, accuracy: None };
+                                    leaf, allowance, invert: Some(invert), kerf, accuracy: None, labels: None };
         match connect(&[a, b], &o) {
             Ok(r) => {
                 for p in &r.pieces {

@@ -91,21 +91,32 @@ test('B is walked clockwise whichever way it is drawn, and A counter-clockwise',
 
 test('labels are paired: label k+1 at the same arc length on A and B, inside and beyond its hole', () => {
   const r = m.connect([egg, flat], { count: 30, start: [3, 40] });
+  let moved = 0;
   for (const [i, w] of [WA, WB].entries()) {
     const piece = r.pieces[i];
     assert.equal(piece.labels.length, 30);
     piece.labels.forEach((l, k) => {
       assert.equal(l.text, String(k + 1), `piece ${i} label ${k}`);
       const fl = nearestExact(w.ex, l.at), fh = nearestExact(w.ex, piece.holes[k].center);
-      close(wrapDiff(fl.s, fh.s, P), 0, 1e-9, `piece ${i} label ${k + 1} arc length vs its hole`);
-      assert.ok(fl.dist > fh.dist + piece.holes[k].diameter / 2, `piece ${i} label ${k + 1} not beyond its hole`);
+      // A label that had to move clear of its neighbours (tight ends of the flat piece) still
+      // sits by its own hole: nearer to it than to any other.
+      const d = piece.holes.map((h) => Math.hypot(h.center[0] - l.at[0], h.center[1] - l.at[1]));
+      assert.equal(d.indexOf(Math.min(...d)), k, `piece ${i} label ${k + 1} is nearer another hole than its own`);
+      if (Math.abs(wrapDiff(fl.s, fh.s, P)) > 1e-9 || fl.dist < fh.dist) moved++;
+      else assert.ok(fl.dist > fh.dist + piece.holes[k].diameter / 2, `piece ${i} label ${k + 1} not beyond its hole`);
       assert.ok(inside(w.poly, l.at), `piece ${i} label ${k + 1} outside`);
       assert.ok(l.angle > -90 && l.angle <= 90, `label angle ${l.angle} reads upside down`);
     });
   }
+  assert.ok(moved <= 6, `only labels at the flat piece's tight ends move along the edge, ${moved} did`);
+  // Where neither moved, label k + 1 is at the same arc length from the start on A and B.
   const sA = r.pieces[0].labels.map((l) => nearestExact(WA.ex, l.at).s - 3);
   const sB = r.pieces[1].labels.map((l) => nearestExact(WB.ex, l.at).s - 40);
-  sA.forEach((s, k) => close(wrapDiff(s, sB[k], P), 0, 1e-9, `label ${k + 1}: A vs B arc length from start`));
+  const hA = r.pieces[0].holes.map((h) => nearestExact(WA.ex, h.center).s - 3);
+  const hB = r.pieces[1].holes.map((h) => nearestExact(WB.ex, h.center).s - 40);
+  sA.forEach((s, k) => {
+    if (Math.abs(wrapDiff(s, hA[k], P)) < 1e-9 && Math.abs(wrapDiff(sB[k], hB[k], P)) < 1e-9) close(wrapDiff(s, sB[k], P), 0, 1e-9, `label ${k + 1}: A vs B arc length from start`);
+  });
   // One mark per piece, pointing at connector 0.
   for (const i of [0, 1]) assert.equal(r.pieces[i].marks.length, 1, `piece ${i} marks`);
 });
@@ -232,7 +243,12 @@ test('every bad input gets its own message', () => {
     [[egg, flat], { count: 3, diameter: 0 }, /`diameter`: must be a positive number, got 0/],
     [[egg, flat], { count: 3, inset: -2 }, /`inset`: must be a positive number, got -2/],
     [[egg, flat], { count: 3, kind: 'teeth', length: 0 }, /`length`: must be a positive number/],
-    [[egg, flat], { count: 3, kind: 'teeth', angle: 100 }, /`angle`: must be a flank angle in degrees/],
+    [[egg, flat], { count: 3, kind: 'teeth', angle: 180 }, /`angle`: must be a flank angle in degrees, more than 0 and less than 180 \(90 square, more than 90 a dovetail\), got 180/],
+    [[egg, flat], { count: 40, kind: 'teeth', angle: 170 }, /dovetails' corners collide\. At this pitch the flank angle must be between [\d.]+° and [\d.]+°/],
+    [[egg, flat], { count: 13, kind: 'leaves' }, /`count`: leaves alternate between the two pieces, so their number must be even, got 13: use 12 or 14/],
+    [[egg, flat], { count: 12, kind: 'leaves', leaf: 'knot' }, /`leaf`: must be "tab" \(glued\) or "lock"/],
+    [[egg, flat], { count: 12, allowance: -1 }, /`allowance`: must be zero or a positive distance/],
+    [[egg, flat], { count: 12, kind: 'teeth', allowance: 1 }, /teeth interlock on the seam line itself/],
     [[egg, flat], { count: 3, kerf: -0.1 }, /`kerf`: must be zero or a positive cut width/],
     [[egg, flat], { count: 3, diameter: 1, kerf: 1 }, /the holes would vanish/],
     [[egg, flat], { count: 3, start: [0, NaN] }, /`start`/],
@@ -287,4 +303,20 @@ test('a tight concave notch: teeth running into each other are reported by conne
     assert.ok(s > wall0 - r.pitch * 1.5 && s < wall1 + r.pitch * 1.5, `connector ${k} at ${s} is far from the notch [${wall0}, ${wall1}]`);
   }
   assert.ok(!r.warnings.some((s) => s.startsWith('On the second piece')), 'the plain square should not warn');
+});
+
+test('defaults(): the options every host starts from, and how sizes follow the pitch', () => {
+  const d = m.defaults();
+  const one = (name, kind, leaf) => d.options.find((o) => o.name === name && o.kinds.includes(kind) && (!o.leaf || o.leaf === leaf));
+  assert.equal(one('count', 'stitch').value, 24);
+  assert.equal(one('angle', 'teeth').value, 90);
+  assert.equal(one('leaf', 'leaves').value, 'tab');
+  assert.equal(one('allowance', 'stitch').value, 0);
+  // The derived sizes are what connect() uses when they are absent.
+  const r = m.connect([egg, flat], { count: 20 });
+  const dia = one('diameter', 'stitch').pitch * r.pitch;
+  close(r.pieces[0].holes[0].diameter, dia, 1e-12, 'default hole diameter = defaults().diameter.pitch × pitch');
+  const f = nearestExact(WA.ex, r.pieces[0].holes[0].center);
+  close(f.dist, one('inset', 'stitch').pitch * r.pitch, 1e-9, 'default inset');
+  for (const k of ['stitch', 'teeth', 'leaves', 'hybrid']) assert.ok(d.invert[k].length > 10, `invert's meaning for ${k}`);
 });

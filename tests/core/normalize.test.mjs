@@ -61,14 +61,25 @@ test('pivots: centre keeps the bounding-box centre, a point stays fixed, centroi
 
 const throws = (fn, re, what) => assert.throws(fn, (e) => e instanceof Error && re.test(e.message), what);
 
+test('one path scales to a numeric target; pivot "start" keeps every first anchor in place', () => {
+  const r = m.normalize([egg], { target: 200, pivot: 'start' });
+  assert.ok(Math.abs(m.measure(r.paths[0]).perimeter - 200) < 1e-9 * 200, `perimeter ${m.measure(r.paths[0]).perimeter}`);
+  assert.deepEqual(r.paths[0].points[0].anchor, egg.points[0].anchor, 'the first anchor stays');
+  const two = m.normalize([egg, square], { pivot: 'start' });
+  [egg, square].forEach((p, i) => assert.deepEqual(two.paths[i].points[0].anchor, p.points[0].anchor, `path ${i + 1}: first anchor`));
+  // The other anchors move away from the first by the scale: |q − q0| grows by exactly s.
+  const s = two.scales[1], q0 = square.points[0].anchor, q = square.points[2].anchor, g = two.paths[1].points[2].anchor;
+  assert.ok(Math.abs(Math.hypot(g[0] - q0[0], g[1] - q0[1]) - s * Math.hypot(q[0] - q0[0], q[1] - q0[1])) < 1e-9, 'scaled about the first anchor');
+});
+
 test('bad options and inputs throw specific errors', () => {
-  throws(() => m.normalize([egg], {}), /Expected at least 2 closed paths to normalize, got 1/, 'one path');
+  throws(() => m.normalize([egg], {}), /Expected at least 2 closed paths to normalize, or 1 with a number as the target perimeter, got 1/, 'one path');
   throws(() => m.normalize([], {}), /got 0/, 'no paths');
   throws(() => m.normalize([egg, square], { target: 'bigest' }), /Option `target`: must be "largest", "smallest", "mean", "first" or a perimeter .*got "bigest"/, 'unknown target');
   throws(() => m.normalize([egg, square], { target: 0 }), /Option `target`.*got 0/, 'zero target');
   throws(() => m.normalize([egg, square], { target: -5 }), /Option `target`.*got -5/, 'negative target');
   throws(() => m.normalize([egg, square], { target: NaN }), /Option `target`.*got NaN/, 'NaN target');
-  throws(() => m.normalize([egg, square], { pivot: [1] }), /Option `pivot`: must be "center" .*"centroid" or a point \[x, y\].*got \[1\]/, 'short pivot');
+  throws(() => m.normalize([egg, square], { pivot: [1] }), /Option `pivot`: must be "center" .*"centroid", "start" \(each path's first anchor\) or a point \[x, y\].*got \[1\]/, 'short pivot');
   throws(() => m.normalize([egg, square], { pivot: 'middle' }), /Option `pivot`.*got "middle"/, 'unknown pivot');
   throws(() => m.normalize([egg, square], { pivot: [0, NaN] }), /Option `pivot`/, 'NaN pivot');
   throws(() => m.normalize([egg, square], { accuracy: 'high' }), /Option `accuracy`: must be a number, got "high"/, 'accuracy type');

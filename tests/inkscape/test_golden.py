@@ -70,8 +70,10 @@ class ConnectGoldenPx(ComparisonMixin, TestCase):
     compare_file = ["svg/connect_px.svg"]  # a list: the file name goes into the golden's name
     comparisons = [
         ("--id=A", "--id=B", "--kind=leaves", "--count=12", "--slide=0.25", "--labels=false"),
-        ("--id=A", "--id=B", "--kind=teeth", "--count=12", "--slide=0.25", "--length=2"),
-        ("--id=B", "--id=A", "--kind=leaves", "--spacing=pitch", "--pitch=50", "--invert=true"),
+        # Labels off: the 40 × 30 triangle has no room for numbers clear of its teeth and leaves
+        # at its sharp corners (the core says so in a warning, which would fail the comparison).
+        ("--id=A", "--id=B", "--kind=teeth", "--count=12", "--slide=0.25", "--length=2", "--labels=false"),
+        ("--id=B", "--id=A", "--kind=leaves", "--spacing=pitch", "--pitch=50", "--invert=true", "--labels=false"),
     ]
 
     def test_default_settings(self):

@@ -220,7 +220,7 @@ class Errors(unittest.TestCase):
 
     def test_wrong_selection_counts_are_explained(self):
         self.assert_refused(Connect, "pieces_mm.svg", ["--id=A"], "exactly 2", "1 selected")
-        self.assert_refused(Normalize, "pieces_mm.svg", [], "at least 2", "0 selected")
+        self.assert_refused(Normalize, "pieces_mm.svg", [], "at least 1", "0 selected")
 
     def test_core_option_errors_come_through(self):
         self.assert_refused(Connect, "connect_mm.svg", ["--id=A", "--id=B", "--kind=rivets"], "kind", "rivets")

@@ -19,6 +19,7 @@ test('too many connectors for the holes: diameter and pitch in mm, then in inche
   const page = await panel.browser.newPage();
   await sample(page);
   const perimeter = Number(/perimeter ([\d.]+) mm/.exec(await page.textContent('#stats'))[1]);
+  await page.fill('#diameter', '2');
   await page.fill('#count', '200');
   await page.waitForFunction(() => document.body.dataset.state === 'error');
   const mm = await message(page);
@@ -44,14 +45,18 @@ test('Normalize off: the perimeters in the message are the ones in the table', a
   await page.close();
 });
 
-test('teeth: the flank angle field stops at 90°, a flank error shows a rounded angle', async () => {
+test('teeth: the flank angle field takes dovetails up to 179°, a flank error shows a rounded angle', async () => {
   const page = await panel.browser.newPage();
   await sample(page);
   await page.click('#kind button[data-kind="teeth"]');
   await waitReady(page);
-  assert.equal(await page.getAttribute('#angle', 'max'), '90');
-  await page.fill('#angle', '120');
-  assert.equal(await page.evaluate(() => document.querySelector('#angle').classList.contains('invalid')), true, '120° is marked invalid');
+  // The core's default (defaults()), not a number of the panel's own.
+  assert.equal(await page.inputValue('#angle'), '90');
+  assert.equal(await page.getAttribute('#angle', 'max'), '179');
+  await page.fill('#angle', '180');
+  assert.equal(await page.evaluate(() => document.querySelector('#angle').classList.contains('invalid')), true, '180° is marked invalid');
+  await page.fill('#angle', '110');
+  assert.equal(await page.evaluate(() => document.querySelector('#angle').classList.contains('invalid')), false, '110° (a dovetail) is valid');
   await page.waitForTimeout(100);
   assert.equal(await page.evaluate(() => document.body.dataset.state), 'ready', await message(page));
   await page.fill('#angle', '60');

@@ -4,31 +4,11 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { artifactPath, usePanelBrowser, waitReady } from './support.mjs';
 import { openPanel, SKINS } from './cep-stand-in.mjs';
-import { referenceLength } from '../illustrator/reference-length.mjs';
+import { applyOk, items, lengthOf } from './cep-document.mjs';
 import { centroidOfAnchors, distance, inside, sample } from './geometry.mjs';
 
 const MM = 72 / 25.4;
 const panel = usePanelBrowser();
-
-/** Every item of a snapshot layer tree, flattened, with its group path. */
-function items(snapshotDoc) {
-  const out = [];
-  const walk = (list, layer, group) => {
-    for (const it of list) {
-      out.push({ ...it, layer, group });
-      if (it.items) walk(it.items, layer, it.name);
-    }
-  };
-  for (const l of snapshotDoc.layers) walk(l.items, l.name, null);
-  return out;
-}
-/** Presses Apply and waits for the bridge's answer, which must be 'ok' (else the panel's status is the message). */
-async function applyOk(page) {
-  await page.click('#apply-btn');
-  await page.waitForFunction(() => document.body.dataset.applied);
-  assert.equal(await page.evaluate(() => document.body.dataset.applied), 'ok', `apply failed: ${await page.textContent('#status')}`);
-}
-const lengthOf = (it) => referenceLength({ closed: it.closed, points: it.points.map((p) => ({ anchor: p.a, left: p.l, right: p.r })) });
 
 const TWO_SHAPES = {
   units: 'mm',
@@ -51,6 +31,9 @@ test('select two shapes, normalize, add stitching, apply: equal perimeters and p
   await page.selectOption('#norm-target', 'largest');
   await page.click('#kind button[data-kind="stitch"]');
   await page.fill('#count', '20');
+  // Sizes are automatic (the core's fractions of the pitch) unless typed: type the ones checked below.
+  await page.fill('#inset', '4');
+  await page.fill('#diameter', '2');
   await page.waitForFunction(() => /^20 connectors/.test(document.querySelector('#stats').textContent));
   const previewHoles = await page.$$eval('#preview .hole', (h) => h.length);
   assert.equal(previewHoles, 40, `preview holes: wanted 40 (20 per piece), got ${previewHoles}`);

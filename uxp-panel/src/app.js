@@ -7,8 +7,10 @@
   var MM = 72 / 25.4;
   var DEFAULT_PARAMS = {
     normalize: true, target: 'largest', exact: 0, pivot: 'center',
-    kind: 'stitch', spacing: 'count', count: 24, pitch: 10 * MM, slide: 0,
-    diameter: 2 * MM, inset: 4 * MM, length: 5 * MM, angle: 60, invert: false, kerf: 0,
+    kind: 'stitch', spacing: 'count', count: null, pitch: 10 * MM, slide: 0,
+    // Sizes 0: automatic (the core's fractions of the pitch); count and angle null: the core's
+    // defaults() — no number of the panel's own.
+    diameter: 0, inset: 0, length: 0, angle: null, leaf: 'tab', allowance: 0, invert: false, kerf: 0, labels: true,
     start: [{ mode: 'first', anchor: 1, offset: 0 }, { mode: 'first', anchor: 1, offset: 0 }],
   };
 
@@ -47,12 +49,37 @@
     inset: { get: function () { return params.inset; }, set: function (v) { params.inset = v; }, min: 0 },
     length: { get: function () { return params.length; }, set: function (v) { params.length = v; }, min: 0 },
     kerf: { get: function () { return params.kerf; }, set: function (v) { params.kerf = v; }, min: 0 },
+    allowance: { get: function () { return params.allowance; }, set: function (v) { params.allowance = v; }, min: 0 },
     offsetA: { get: function () { return params.start[0].offset; }, set: function (v) { params.start[0].offset = v; }, min: -Infinity },
     offsetB: { get: function () { return params.start[1].offset; }, set: function (v) { params.start[1].offset = v; }, min: -Infinity },
     wcut: { get: function () { return settings.layers.cut.width; }, set: function (v) { settings.layers.cut.width = v; }, min: 0, layer: true },
     wscore: { get: function () { return settings.layers.score.width; }, set: function (v) { settings.layers.score.width = v; }, min: 0, layer: true },
     wengrave: { get: function () { return settings.layers.engrave.width; }, set: function (v) { settings.layers.engrave.width = v; }, min: 0, layer: true },
   };
+
+  /** Sizes left empty take the core's default, a fraction of the pitch (shown as the placeholder). */
+  var AUTO = { diameter: true, inset: true, length: true };
+  var coreDefaults = null;
+  function autoText(name) {
+    var p = design && design.pitch;
+    if (!coreDefaults || !(p > 0)) return 'auto';
+    var d = coreDefaults.options.filter(function (o) {
+      return o.name === name && o.kinds.indexOf(params.kind) >= 0 && (!o.leaf || o.leaf === params.leaf);
+    })[0];
+    if (!d || d.pitch === undefined) return 'auto';
+    var len = params.length > 0 ? params.length : 0.5 * p;
+    return 'auto ' + lenText(d.pitch * p + (d.length || 0) * len);
+  }
+  /** Fills what the panel leaves to the core (count, angle) from `defaults()`, and the invert label. */
+  function applyCoreDefaults() {
+    if (!DF.core.has('defaults')) return;
+    coreDefaults = DF.core.defaults();
+    coreDefaults.options.forEach(function (o) {
+      if (o.name === 'count' && params.count == null) params.count = o.value;
+      if (o.name === 'angle' && params.angle == null) params.angle = o.value;
+    });
+    syncControls();
+  }
 
   function fmt(points) {
     return DF.units.format(points, unit);
@@ -108,7 +135,9 @@
       if (s.previousElementSibling && s.previousElementSibling.id === 'label-size') s.textContent = 'pt';
     });
     $$('input.len').forEach(function (input) {
-      if (document.activeElement !== input) input.value = lenText(LEN[input.dataset.len].get());
+      var auto = AUTO[input.dataset.len] && !(LEN[input.dataset.len].get() > 0);
+      if (document.activeElement !== input) input.value = auto ? '' : lenText(LEN[input.dataset.len].get());
+      if (AUTO[input.dataset.len]) input.placeholder = autoText(input.dataset.len);
       input.classList.remove('invalid');
     });
   }
@@ -132,8 +161,11 @@
     $('#count').value = params.count;
     $('#slide').value = params.slide;
     $('#slide-out').textContent = Number(params.slide).toFixed(2);
-    $('#angle').value = params.angle;
+    $('#angle').value = params.angle == null ? '' : params.angle;
+    $('#leaf').value = params.leaf || 'tab';
     $('#invert').checked = params.invert;
+    $('#invert-text').textContent = coreDefaults ? coreDefaults.invert[params.kind] : 'Invert';
+    $('#labels-on').checked = params.labels !== false;
     $$('.start').forEach(function (row) {
       var s = params.start[Number(row.dataset.piece)];
       $('.start-mode', row).value = s.mode;
@@ -195,12 +227,14 @@
     var norm = $('#normalize-result');
     norm.textContent = '';
     if (design && design.normalized) {
-      norm.textContent = '→ ' + fmt(design.normalized.perimeter) + '  (A ×' + design.normalized.scales[0].toFixed(4) + ', B ×' + design.normalized.scales[1].toFixed(4) + ')';
+      var sc = design.normalized.scales;
+      norm.textContent = '→ ' + fmt(design.normalized.perimeter) + '  (' + (sc.length === 1 ? '×' + sc[0].toFixed(4) : 'A ×' + sc[0].toFixed(4) + ', B ×' + sc[1].toFixed(4)) + ')';
     }
     var layers = settings.layers;
     var fieldError = Object.keys(fieldErrors).map(function (k) { return fieldErrors[k]; }).join(' ');
     if (design && design.ok && !fieldError) {
       DF.preview.render($('#preview'), design.pieces, layers, settings.labelSize, design.pitch);
+      if (design.single) stats.textContent = 'one path → perimeter ' + fmt(design.perimeter) + ' (Apply scales it in place)';
       stats.textContent = design.count + (design.count === 1 ? ' connector' : ' connectors') + ' · pitch ' + fmt(design.pitch) + ' · perimeter ' + fmt(design.perimeter);
       msg.className = 'message' + (design.warnings.length ? ' warning' : '');
       msg.textContent = design.warnings.map(function (w) { return DF.messages.humanize(w, fmt); }).join(' ');
@@ -266,16 +300,20 @@
     });
     $('#angle').addEventListener('input', function (e) {
       var v = Number(e.target.value);
-      var ok = v > 0 && v <= 90; // the flank against the edge: 90° is square teeth
+      var ok = v > 0 && v < 180; // the flank against the edge: 90° square, more a dovetail
       e.target.classList.toggle('invalid', !ok);
       if (ok) { params.angle = v; save(); recompute(); }
     });
     $('#invert').addEventListener('change', function (e) { params.invert = e.target.checked; changed(); });
+    $('#leaf').addEventListener('change', function (e) { params.leaf = e.target.value; changed(); });
+    $('#labels-on').addEventListener('change', function (e) { params.labels = e.target.checked; changed(); });
     $$('input.len').forEach(function (input) {
       var spec = LEN[input.dataset.len];
       input.addEventListener('input', function () {
-        var v = DF.units.parse(input.value, unit);
-        var ok = isFinite(v) && v >= spec.min && !(spec.min === 0 && v === 0 && input.dataset.len !== 'kerf');
+        var auto = AUTO[input.dataset.len] && input.value.trim() === '';
+        var v = auto ? 0 : DF.units.parse(input.value, unit);
+        var zeroOk = auto || input.dataset.len === 'kerf' || input.dataset.len === 'allowance';
+        var ok = isFinite(v) && v >= spec.min && !(spec.min === 0 && v === 0 && !zeroOk);
         input.classList.toggle('invalid', !ok);
         if (ok) {
           spec.set(v);
@@ -490,7 +528,7 @@
       viewer.setMesh(null);
       return set3dMessage('This build of the geometry core has no simulate(): rebuild it to see the 3D form.', false);
     }
-    if (!design || !design.ok) {
+    if (!design || !design.ok || design.single) {
       if (exportWanted) {
         exportWanted = '';
         setStatus('', true);
@@ -671,6 +709,7 @@
     if (host.kind === 'browser' && settings.unit) host.setUnit(settings.unit);
     syncControls();
     DF.core.load().then(function () {
+      applyCoreDefaults();
       return host.start({ selection: onSelection, theme: applyTheme });
     }).then(function () {
       // The browser app opens on the first sample, so there is something to look at right away.

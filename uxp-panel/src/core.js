@@ -122,6 +122,10 @@
     placeOnForm: function (form, points) {
       return call('placeOnForm', [form, points]);
     },
+    /** The default connector options and how each is derived (the core's; no host keeps its own). */
+    defaults: function () {
+      return call('defaults', []);
+    },
     has: function (name) {
       return !!api && typeof api[name] === 'function';
     },

@@ -47,17 +47,44 @@
     return { anchor: k, base: base, arc: s < 0 ? s + perimeter : s };
   }
 
-  function connectOptions(params, start) {
-    var o = { kind: params.kind, slide: params.slide, start: start, invert: !!params.invert, kerf: params.kerf };
-    if (params.spacing === 'pitch') o.pitch = params.pitch;
-    else o.count = Math.round(params.count);
-    if (params.kind === 'stitch' || params.kind === 'hybrid') {
-      o.inset = params.inset;
-      o.diameter = params.diameter;
+  /**
+   * The core's connect options from the panel's parameters. Only what the user set is sent: sizes
+   * left automatic (0), the count and angle left to the core (null), and — when both pieces start
+   * at their first anchor with no offset and no slide — the start and slide, so the core places the
+   * connectors clear of the corners (see `connect` in core/src/connect/phase.rs).
+   */
+  function connectOptions(params, start, auto) {
+    var o = { kind: params.kind, invert: !!params.invert, kerf: params.kerf };
+    if (!auto) {
+      o.slide = params.slide;
+      o.start = start;
     }
-    if (params.kind !== 'stitch') o.length = params.length;
-    if (params.kind === 'teeth' || params.kind === 'hybrid') o.angle = params.angle;
+    if (params.spacing === 'pitch') o.pitch = params.pitch;
+    else if (params.count != null) o.count = Math.round(params.count);
+    if (params.kind === 'stitch' || params.kind === 'hybrid') {
+      if (params.inset > 0) o.inset = params.inset;
+      if (params.diameter > 0) o.diameter = params.diameter;
+    }
+    if (params.kind !== 'stitch' && params.length > 0) o.length = params.length;
+    if ((params.kind === 'teeth' || params.kind === 'hybrid') && params.angle != null) o.angle = params.angle;
+    if (params.kind === 'leaves') o.leaf = params.leaf || 'tab';
+    if ((params.kind === 'stitch' || params.kind === 'leaves') && params.allowance > 0) o.allowance = params.allowance;
+    if (params.labels === false) o.labels = false;
     return o;
+  }
+
+  /** One path with an exact target: Normalize alone scales it (Apply updates it in place). */
+  function computeSingle(pieces, params, out) {
+    var p = pieces[0];
+    var n = DF.core.normalize([p.path], { target: params.exact, pivot: params.pivot });
+    out.normalized = n;
+    out.single = true;
+    out.perimeter = n.perimeter;
+    out.count = 0;
+    out.pitch = 0;
+    out.pieces = [{ key: 'A', id: p.id, name: p.name, path: n.paths[0], scale: n.scales[0], outline: n.paths[0], holes: [], slots: [], labels: [], marks: [] }];
+    out.ok = true;
+    return out;
   }
 
   /**
@@ -67,6 +94,14 @@
   function compute(selection, params) {
     var pieces = selection.pieces || [];
     var out = { ok: false, measures: measureAll(pieces), warnings: [] };
+    if (pieces.length === 1 && params.normalize && params.target === 'exact' && params.exact > 0 && out.measures[0].ok) {
+      try {
+        return computeSingle(pieces, params, out);
+      } catch (e) {
+        out.error = e && e.message ? e.message : String(e);
+        return out;
+      }
+    }
     if (pieces.length !== 2) {
       // Illustrator's wording; `pieceCount` lets a host with no selection say it its own way.
       out.pieceCount = pieces.length;
@@ -91,7 +126,8 @@
       var starts = pieces.map(function (p, i) {
         return startArc(p, paths[i], perims[i], params.start[i], i, out.measures[i].m.orientation);
       });
-      var result = DF.core.connect(paths, connectOptions(params, [starts[0].arc, starts[1].arc]));
+      var auto = !params.slide && params.start.every(function (s) { return s.mode === 'first' && !s.offset; });
+      var result = DF.core.connect(paths, connectOptions(params, [starts[0].arc, starts[1].arc], auto));
       out.starts = starts;
       // simulate() pairs A(t) with B(offset + t): the seam offset matching these connectors.
       var off = (starts[1].arc - starts[0].arc) % out.perimeter;
@@ -109,6 +145,8 @@
           scale: out.normalized ? out.normalized.scales[i] : 1,
           startAnchor: starts[i].anchor,
           outline: r.outline,
+          seam: r.seam,
+          slots: r.slots || [],
           holes: r.holes || [],
           labels: r.labels || [],
           marks: r.marks || [],
@@ -128,9 +166,15 @@
       updates: design.normalized
         ? design.pieces.map(function (p) { return { id: p.id, path: p.path }; })
         : [],
-      pieces: design.pieces.map(function (p) {
-        var piece = { id: p.id, name: 'piece ' + p.key, holes: p.holes, labels: p.labels, marks: p.marks };
-        if (params.kind !== 'stitch') piece.outline = p.outline;
+      pieces: design.single ? [] : design.pieces.map(function (p) {
+        // Numbers at the panel's size, or smaller where the core found less room.
+        var labels = params.labels === false ? [] : p.labels.map(function (l) {
+          return { text: l.text, at: l.at, angle: l.angle, size: l.size > 0 ? Math.max(0.1, Math.min(l.size, settings.labelSize)) : settings.labelSize };
+        });
+        var piece = { id: p.id, name: 'piece ' + p.key, holes: p.holes, slots: p.slots, labels: labels, marks: p.marks };
+        // With a seam allowance the outline is the cut line and the seam line goes to the score layer.
+        if (params.kind !== 'stitch' || p.seam) piece.outline = p.outline;
+        if (p.seam) piece.seam = p.seam;
         return piece;
       }),
       layers: settings.layers,

@@ -16,6 +16,10 @@
     ['Option `kerf`: {L} is not smaller than the hole diameter {L}: the holes would vanish', 'A kerf of {L} is not smaller than the holes ({L} ⌀): the holes would vanish. Use a smaller kerf.'],
     ['Option `pitch`: {L} on a perimeter of {L} gives {N} connectors; at most {N} are allowed', 'A pitch of {L} on a perimeter of {L} gives {N} connectors; at most {N} are allowed: use a larger pitch.'],
     ['different perimeters ({L} and {L};', 'different perimeters ({L} and {L};'],
+    ['A seam allowance of {L} makes the cut line', 'A seam allowance of {L} makes the cut line'],
+    ['Locking leaves {L} long leave no neck under their head ({L} wide) at a pitch of {L}: make them longer than {L}', 'Locking leaves {L} long leave no neck under their head ({L} wide) at a pitch of {L}: make them longer than {L}'],
+    ['A kerf of {L} is as wide as the slots for the locking leaves ({L} across)', 'A kerf of {L} is as wide as the slots for the locking leaves ({L} across)'],
+    ['Option `allowance`: must be zero or a positive distance from the seam line to the cut line, got {L}', 'The allowance must be 0 or more (it is {L})'],
   ];
   function compile(template) {
     var parts = template.split(/\{([LAN])\}/);

@@ -16,7 +16,8 @@
   }
 
   /**
-   * Draws `pieces` ([{ key, name, path, outline?, holes?, labels?, marks? }], document points, y up)
+   * Draws `pieces` ([{ key, name, path, outline?, holes?, slots?, seam?, labels?, marks? }], document
+   * points, y up)
    * into the <svg> element. `layers` gives colours; `labelSize` in points; `pitch` (points, optional)
    * caps the label size so neighbouring numbers never overlap on screen.
    */
@@ -56,17 +57,23 @@
       (p.holes || []).forEach(function (h) {
         el('path', { class: 'hole', d: X.pathD(h.path), stroke: layers.cut.color }, g);
       });
+      (p.slots || []).forEach(function (s) {
+        el('path', { class: 'slot', d: X.pathD(s), stroke: layers.cut.color }, g);
+      });
+      if (p.seam) el('path', { class: 'seam', d: X.pathD(p.seam), stroke: layers.score.color, 'stroke-dasharray': '4 2' }, g);
       (p.marks || []).forEach(function (m) {
         el('path', { class: 'mark', d: X.pathD(m), stroke: layers.score.color }, g);
       });
       var font = Math.max(labelSize, minFont);
       if (pitch > 0) font = Math.min(font, 0.55 * pitch);
       (p.labels || []).forEach(function (l) {
+        // The core sizes each number to clear holes, slots and the cut line: never larger.
+        var size = l.size > 0 ? Math.min(font, Math.max(l.size, minFont)) : font;
         var t = el('text', {
           class: 'label',
           x: X.n(l.at[0]),
           y: X.n(-l.at[1]),
-          'font-size': X.n(font),
+          'font-size': X.n(size),
           fill: layers.engrave.color,
           'text-anchor': 'middle',
           'dominant-baseline': 'central',

@@ -46,6 +46,8 @@
     return b;
   }
   function labelEl(label, size) {
+    // The core's size keeps the number clear of holes, slots and the cut line: never larger.
+    if (label.size > 0 && label.size < size) size = label.size;
     var x = n(label.at[0]);
     var y = n(-label.at[1]);
     var rot = label.angle ? ' transform="rotate(' + n(-label.angle) + ' ' + x + ' ' + y + ')"' : '';
@@ -78,6 +80,8 @@
         return c;
       });
       moved.marks = p.marks.map(function (m) { return movePath(m, dx, dy); });
+      moved.slots = (p.slots || []).map(function (s) { return movePath(s, dx, dy); });
+      if (p.seam) moved.seam = movePath(p.seam, dx, dy);
       moved.labels = p.labels.map(function (l) {
         var c = {};
         Object.keys(l).forEach(function (k) { c[k] = l[k]; });
@@ -89,7 +93,7 @@
   }
 
   /**
-   * The laser file for a design: { pieces: [{ name, outline, holes, labels, marks }] } (document
+   * The laser file for a design: { pieces: [{ name, outline, holes, slots?, seam?, labels, marks }] } (document
    * points, y up), layers settings { cut, score, engrave: { name, color, width } }, labelSize (pt),
    * unit for width/height. Returns SVG text.
    */
@@ -128,11 +132,15 @@
       p.holes.forEach(function (hole, i) {
         items.push('<path class="hole" data-index="' + (i + 1) + '" d="' + pathD(hole.path) + '"/>');
       });
+      (p.slots || []).forEach(function (slot, i) {
+        items.push('<path class="slot" data-index="' + (i + 1) + '" d="' + pathD(slot) + '"/>');
+      });
       return '<g id="cut-' + esc(p.key) + '" inkscape:label="' + esc(p.name) + ' connectors">' + items.join('') + '</g>';
     }));
     layer('score', design.pieces.map(function (p) {
       return '<g id="score-' + esc(p.key) + '" inkscape:label="' + esc(p.name) + ' marks">' +
-        p.marks.map(function (m) { return '<path class="mark" d="' + pathD(m) + '"/>'; }).join('') + '</g>';
+        p.marks.map(function (m) { return '<path class="mark" d="' + pathD(m) + '"/>'; }).join('') +
+        (p.seam ? '<path class="seam" d="' + pathD(p.seam) + '"/>' : '') + '</g>';
     }));
     layer('engrave', design.pieces.map(function (p) {
       return '<g id="engrave-' + esc(p.key) + '" inkscape:label="' + esc(p.name) + ' labels">' +

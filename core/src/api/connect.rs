@@ -5,7 +5,7 @@
 pub mod js;
 
 use super::path::{arr, PathDto};
-use crate::connect::{self, options::RawOptions, Connection, Hole, Label, PieceOut};
+use crate::connect::{self, leaves::Slot, options::RawOptions, Connection, Hole, Label, PieceOut};
 use crate::error::{Error, Result};
 use crate::validate;
 use serde::{Deserialize, Serialize};
@@ -31,12 +31,21 @@ pub struct ConnectOptionsDto {
     pub length: Option<f64>,
     #[serde(default)]
     pub angle: Option<f64>,
+    /// `"tab"` (default) or `"lock"`.
+    #[serde(default)]
+    pub leaf: Option<String>,
+    /// Seam allowance: distance from the seam line out to the cut line (default 0).
+    #[serde(default)]
+    pub allowance: Option<f64>,
     #[serde(default)]
     pub invert: Option<bool>,
     #[serde(default)]
     pub kerf: Option<f64>,
     #[serde(default)]
     pub accuracy: Option<f64>,
+    /// `false` when the host draws no numbers: `labels` come back empty and unwarned.
+    #[serde(default)]
+    pub labels: Option<bool>,
 }
 
 impl From<&ConnectOptionsDto> for RawOptions {
@@ -51,9 +60,12 @@ impl From<&ConnectOptionsDto> for RawOptions {
             diameter: o.diameter,
             length: o.length,
             angle: o.angle,
+            leaf: o.leaf.clone(),
+            allowance: o.allowance,
             invert: o.invert,
             kerf: o.kerf,
             accuracy: o.accuracy,
+            labels: o.labels,
         }
     }
 }
@@ -72,25 +84,39 @@ impl From<&Hole> for HoleDto {
     }
 }
 
-/// `{ text, at: [x, y], angle }`
+/// `{ text, at: [x, y], angle, size }`: `size` is the text height that keeps the label's box
+/// (`size` high, `(0.6·characters + 0.2)·size` wide, centred on `at`) clear of the holes, slots,
+/// cut line and other labels.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct LabelDto {
     pub text: String,
     pub at: [f64; 2],
     pub angle: f64,
+    pub size: f64,
 }
 
 impl From<&Label> for LabelDto {
     fn from(l: &Label) -> Self {
-        LabelDto { text: l.text.clone(), at: arr(l.at), angle: l.angle }
+        LabelDto { text: l.text.clone(), at: arr(l.at), angle: l.angle, size: l.size }
     }
 }
 
-/// `PieceResult = { outline, holes, labels, marks }`
+impl From<&Slot> for PathDto {
+    fn from(s: &Slot) -> Self {
+        PathDto::from(&s.path)
+    }
+}
+
+/// `PieceResult = { outline, holes, slots, seam?, labels, marks }`: with a seam allowance
+/// `outline` is the cut line and `seam` the seam line (absent without one).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PieceResultDto {
     pub outline: PathDto,
     pub holes: Vec<HoleDto>,
+    #[serde(default)]
+    pub slots: Vec<PathDto>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seam: Option<PathDto>,
     pub labels: Vec<LabelDto>,
     pub marks: Vec<PathDto>,
 }
@@ -101,17 +127,23 @@ impl PieceResultDto {
         PieceResultDto {
             outline: p.outline.as_ref().map(PathDto::from).unwrap_or_else(|| input.clone()),
             holes: p.holes.iter().map(HoleDto::from).collect(),
+            slots: p.slots.iter().map(PathDto::from).collect(),
+            // The seam line is the input outline: handed back point for point.
+            seam: p.seam.as_ref().map(|_| input.clone()),
             labels: p.labels.iter().map(LabelDto::from).collect(),
             marks: p.marks.iter().map(PathDto::from).collect(),
         }
     }
 }
 
-/// `{ count, pitch, pieces: [PieceResult, PieceResult], warnings }`
+/// `{ count, pitch, slide, pieces: [PieceResult, PieceResult], warnings }`; `slide` is the one
+/// used (as given, or chosen to keep connectors clear of corners when none was given).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ConnectDto {
     pub count: usize,
     pub pitch: f64,
+    #[serde(default)]
+    pub slide: f64,
     pub pieces: [PieceResultDto; 2],
     pub warnings: Vec<String>,
 }
@@ -129,6 +161,7 @@ pub fn connect(pieces: &[PathDto], options: &ConnectOptionsDto) -> Result<Connec
     Ok(ConnectDto {
         count: c.count,
         pitch: c.pitch,
+        slide: c.slide,
         pieces: [PieceResultDto::new(&c.pieces[0], &pieces[0]), PieceResultDto::new(&c.pieces[1], &pieces[1])],
         warnings: c.warnings,
     })

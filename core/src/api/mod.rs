@@ -3,6 +3,7 @@
 //! thin shells around these functions; no kurbo type crosses this boundary.
 
 pub mod connect;
+pub mod defaults;
 pub mod form;
 pub mod normalize;
 pub mod path;
@@ -10,6 +11,7 @@ pub mod simulate;
 pub mod svg;
 pub mod value;
 
+pub use defaults::defaults;
 pub use normalize::normalize;
 pub use svg::{path_from_svg, path_to_svg};
 

@@ -14,7 +14,7 @@ use serde::{Deserialize, Serialize};
 pub struct NormalizeOptionsDto {
     /// `"largest" | "smallest" | "mean" | "first"` or a perimeter (number > 0). Default `"largest"`.
     pub target: Option<Value>,
-    /// `"center"` (bounding-box centre, default) | `"centroid"` | `[x, y]`.
+    /// `"center"` (bounding-box centre, default) | `"centroid"` | `"start"` (first anchor) | `[x, y]`.
     pub pivot: Option<Value>,
     /// Relative accuracy of the perimeters (default [`crate::DEFAULT_ACCURACY`]).
     pub accuracy: Option<Value>,
@@ -52,12 +52,13 @@ fn pivot(v: Option<&Value>) -> Result<Pivot> {
         None | Some(Value::Null) => Ok(Pivot::Center),
         Some(Value::Text(s)) if s == "center" => Ok(Pivot::Center),
         Some(Value::Text(s)) if s == "centroid" => Ok(Pivot::Centroid),
+        Some(Value::Text(s)) if s == "start" => Ok(Pivot::Start),
         Some(v) => match v.as_point() {
             Some(p) => Ok(Pivot::At(pt(p))),
             None => Err(Error::Option {
                 name: "pivot",
                 reason: format!(
-                    r#"must be "center" (bounding-box centre), "centroid" or a point [x, y] of two finite numbers, got {v}"#
+                    r#"must be "center" (bounding-box centre), "centroid", "start" (each path's first anchor) or a point [x, y] of two finite numbers, got {v}"#
                 ),
             }),
         },
@@ -73,14 +74,14 @@ pub(crate) fn accuracy_option(v: Option<&Value>) -> Result<f64> {
     }
 }
 
-/// `normalize(paths, options)`: two or more closed paths scaled about their pivots to one
+/// `normalize(paths, options)`: two or more closed paths (one, when `target` is a number) scaled about their pivots to one
 /// perimeter. Options are checked before the paths, paths in order.
 pub fn normalize(paths: &[PathDto], options: &NormalizeOptionsDto) -> Result<NormalizeDto> {
     let target = target(options.target.as_ref())?;
     let pivot = pivot(options.pivot.as_ref())?;
     let accuracy = accuracy_option(options.accuracy.as_ref())?;
-    if paths.len() < 2 {
-        return Err(Error::PieceCount { wanted: "at least 2 closed paths to normalize", got: paths.len() });
+    if paths.is_empty() || (paths.len() < 2 && !matches!(target, Target::Value(_))) {
+        return Err(Error::PieceCount { wanted: normalize::PIECES_WANTED, got: paths.len() });
     }
     let contours = paths
         .iter()

@@ -15,10 +15,13 @@
 //! - the mark: one triangle per piece pointing at connector 0, its tip one text height beyond
 //!   the label, as tall as a text height.
 
+pub mod allowance;
 pub mod circle;
 pub mod edge;
+pub mod labels;
 pub mod leaves;
 pub mod options;
+pub mod phase;
 pub mod piece;
 pub mod spacing;
 pub mod stitch;
@@ -26,9 +29,9 @@ pub mod teeth;
 pub mod warnings;
 
 use crate::contour::Contour;
-use crate::error::{Error, Result};
+use crate::error::{len, Error, Result};
 use kurbo::{CubicBez, Point};
-use options::{Kind, RawOptions, Settings};
+use options::{Kind, Leaf, RawOptions, Settings};
 use piece::Walked;
 use spacing::{connector_positions, locate_many, Station};
 
@@ -52,6 +55,8 @@ pub struct Label {
     pub at: Point,
     /// Degrees, counter-clockwise in a y-up system, in (−90, 90].
     pub angle: f64,
+    /// Text height that keeps the label clear of everything else ([`labels`]).
+    pub size: f64,
 }
 
 /// Everything placed on one piece.
@@ -61,6 +66,11 @@ pub struct PieceOut {
     /// unchanged (stitch holes only).
     pub outline: Option<Contour>,
     pub holes: Vec<Hole>,
+    /// Cuts that receive the other piece's locking leaves (empty otherwise).
+    pub slots: Vec<leaves::Slot>,
+    /// With a seam allowance: the seam line (the input outline), to score; `outline` is then the
+    /// cut line.
+    pub seam: Option<Contour>,
     pub labels: Vec<Label>,
     pub marks: Vec<Contour>,
 }
@@ -70,37 +80,62 @@ pub struct PieceOut {
 pub struct Connection {
     pub count: usize,
     pub pitch: f64,
+    /// The slide used: as given, or chosen to keep connectors clear of corners ([`phase`]).
+    pub slide: f64,
     pub pieces: [PieceOut; 2],
     pub warnings: Vec<String>,
 }
 
-/// Depth of the labels (from the edge, along the inward normal) and the text height they allow.
+/// Depth of the labels (from the seam line, along the inward normal) and the text height they
+/// allow.
 fn label_layout(set: &Settings) -> (f64, f64) {
     let holes = (set.inset + 1.5 * set.diameter, set.diameter);
     let teeth = (0.5 * set.length + 0.25 * set.pitch, 0.25 * set.pitch);
+    let size = 0.25 * set.pitch;
     match set.kind {
         Kind::Stitch => holes,
         Kind::Teeth => teeth,
-        Kind::Leaves => (0.25 * set.pitch, 0.25 * set.pitch),
+        Kind::Leaves if set.leaf == Leaf::Lock => {
+            (set.allowance + leaves::lock_heights(set).0 + 0.5 * leaves::SLOT * set.pitch + 0.6 * size, size)
+        }
+        Kind::Leaves => (0.25 * set.pitch, size),
         Kind::Hybrid => (holes.0.max(teeth.0), set.diameter),
     }
 }
 
-/// Labels `k + 1` and the connector-0 mark of one piece. `side` is +1 to place them inside.
-fn annotate(piece: &Walked, stations: &[Station], set: &Settings, side: f64) -> (Vec<Label>, Vec<Contour>) {
+/// Labels `k + 1` and the connector-0 mark of one piece, clear of its holes, slots and cut line
+/// ([`labels::place`]). `side` is +1 to place them inside. Returns also the labels that fit
+/// nowhere (by number).
+fn annotate(
+    piece: &Walked,
+    stations: &[Station],
+    set: &Settings,
+    side: f64,
+    obstacles: &labels::Obstacles,
+) -> (Vec<Label>, Vec<Contour>, Vec<String>) {
     let (depth, size) = label_layout(set);
-    let labels = stations
-        .iter()
-        .enumerate()
-        .map(|(k, st)| {
-            let n = piece.inward_at(st);
-            Label {
-                text: (k + 1).to_string(),
-                at: st.point + n * (side * depth),
-                angle: circle::readable_angle(piece.along(n)),
-            }
-        })
-        .collect();
+    let mut boxes = Vec::with_capacity(stations.len());
+    let mut out = Vec::with_capacity(stations.len());
+    let mut crowded = Vec::new();
+    let mut scratch = Vec::new();
+    for (k, st) in stations.iter().enumerate() {
+        // The mitre direction at a corner, at unit length: a corner's label goes as deep as its
+        // hole (which is `inset` from both sides, `|n|·inset` from the corner) plus the usual gap.
+        let n = piece.inward_at(st);
+        let m = n.hypot();
+        let text = (k + 1).to_string();
+        let angle = circle::readable_angle(piece.along(n));
+        let hole = set.kind.has_holes().then_some(set.inset * m);
+        let d = depth + hole.map_or(0.0, |h| h - set.inset);
+        let before = hole.map(|h| h - 0.5 * set.diameter);
+        let (at, h, clear) =
+            labels::place(st.point, n / m * side, angle, text.len(), d, size, before, hole.map(|_| k), &boxes, obstacles, &mut scratch);
+        if !clear {
+            crowded.push(text.clone());
+        }
+        boxes.push(labels::LabelBox::new(at, angle, h, text.len()));
+        out.push(Label { text, at, angle, size: h });
+    }
     let marks = stations
         .first()
         .map(|st| {
@@ -108,7 +143,7 @@ fn annotate(piece: &Walked, stations: &[Station], set: &Settings, side: f64) -> 
             vec![circle::triangle(st.point + n * (depth + size), -n, size)]
         })
         .unwrap_or_default();
-    (labels, marks)
+    (out, marks, crowded)
 }
 
 /// Errors for options that cannot give anything sensible anywhere on the seam.
@@ -118,7 +153,7 @@ fn check_feasible(set: &Settings) -> Result<()> {
             return Err(Error::Infeasible {
                 reason: format!(
                     "Holes of diameter {} do not fit between connectors {} apart: use fewer connectors or smaller holes.",
-                    set.diameter, set.pitch
+                    len(set.diameter), len(set.pitch)
                 ),
             });
         }
@@ -127,9 +162,9 @@ fn check_feasible(set: &Settings) -> Result<()> {
             return Err(Error::Infeasible {
                 reason: format!(
                     "An inset of {} puts holes of diameter {} across the edge{}: increase the inset or use smaller holes.",
-                    set.inset,
-                    set.diameter,
-                    if floor > 0.0 { format!(" (the gaps between teeth reach {floor} in)") } else { String::new() }
+                    len(set.inset),
+                    len(set.diameter),
+                    if floor > 0.0 { format!(" (the gaps between teeth reach {} in)", len(floor)) } else { String::new() }
                 ),
             });
         }
@@ -143,6 +178,71 @@ fn check_feasible(set: &Settings) -> Result<()> {
     Ok(())
 }
 
+/// The slide that keeps connectors clear of the corners of both pieces when the user gave
+/// neither a slide nor a start (a connector placed by the user stays where it was put)
+/// ([`phase`]); teeth keep the user's (their gaps and teeth both meet corners anyway).
+fn auto_slide(pieces: &[Walked; 2], raw: &RawOptions, set: &Settings) -> f64 {
+    if raw.slide.is_some() || raw.start.is_some() || set.kind == Kind::Teeth {
+        return set.slide;
+    }
+    let corners = [phase::corners(&pieces[0]), phase::corners(&pieces[1])];
+    if corners.iter().all(Vec::is_empty) {
+        return set.slide;
+    }
+    let first = [set.start[0] + set.slide * set.pitch, set.start[1] + set.slide * set.pitch];
+    let cs = [&corners[0][..], &corners[1][..]];
+    let delta = if set.kind == Kind::Leaves {
+        phase::shift(first, cs, set.pitch, (0.5 * leaves::WIDTH * set.pitch).min(0.5 * set.pitch))
+    } else {
+        let r = 0.5 * set.diameter;
+        // As clear as on a straight edge: neighbours a pitch apart, the inset from the edge.
+        let good = 0.999 * (set.pitch - 2.0 * r).min(set.inset - r);
+        let edges = [warnings::Edge::new(pieces[0].contour.segments().collect()), warnings::Edge::new(pieces[1].contour.segments().collect())];
+        let clearance = |delta: f64| {
+            let mut worst = f64::INFINITY;
+            for (i, w) in pieces.iter().enumerate() {
+                // Only connectors within two pitches of a corner can be worse than on a straight edge.
+                let near: Vec<f64> = corners[i]
+                    .iter()
+                    .flat_map(|&c| {
+                        let k0 = ((c - first[i] - delta) / set.pitch).floor();
+                        (-2..=3).map(move |j| first[i] + delta + (k0 + j as f64) * set.pitch)
+                    })
+                    .collect();
+                let st = locate_many(&w.table, &near);
+                let centers = stitch::centers(w, &st, set);
+                for (j, c) in centers.iter().enumerate() {
+                    let d = edges[i].distance_below(*c, set.inset).unwrap_or(set.inset);
+                    // A centre on the wrong side of the edge is worse than any crossing.
+                    let d = if edges[i].contains(*c) == !set.invert { d } else { -d - set.inset };
+                    worst = worst.min(d - r);
+                    if j % 6 != 5 {
+                        worst = worst.min((centers[j + 1] - *c).hypot() - 2.0 * r);
+                    }
+                }
+            }
+            worst
+        };
+        phase::best(&phase::candidates(first, cs, set.pitch), set.pitch, good, clearance)
+    };
+    (set.slide + delta / set.pitch).rem_euclid(1.0)
+}
+
+/// Stitch holes without a given slide: a hole on every corner when the spacing allows
+/// ([`phase::on_corners`]), as arc lengths from the start.
+fn corner_positions(pieces: &[Walked; 2], raw: &RawOptions, set: &Settings) -> Option<Vec<f64>> {
+    if raw.slide.is_some() || raw.start.is_some() || set.kind != Kind::Stitch {
+        return None;
+    }
+    let corners = [phase::corners(&pieces[0]), phase::corners(&pieces[1])];
+    let square = std::f64::consts::FRAC_PI_2 + 1e-6;
+    let sharp = pieces.iter().any(|w| !phase::corners_turning(w, square, std::f64::consts::PI).is_empty());
+    if sharp {
+        return None;
+    }
+    phase::on_corners([set.start[0], set.start[1]], [&corners[0], &corners[1]], pieces[0].perimeter(), set.count)
+}
+
 /// Places paired connectors on two closed pieces `a` and `b` of equal perimeter.
 pub fn connect(a: &Contour, b: &Contour, raw: &RawOptions) -> Result<Connection> {
     let accuracy = crate::api::accuracy_or_default(raw.accuracy)?;
@@ -152,20 +252,36 @@ pub fn connect(a: &Contour, b: &Contour, raw: &RawOptions) -> Result<Connection>
     if (pa - pb).abs() > PERIMETER_TOLERANCE * pa.max(pb) {
         return Err(Error::PerimeterMismatch { a: pa, b: pb });
     }
-    let set = options::resolve(raw, pa)?;
+    let mut set = options::resolve(raw, pa)?;
     check_feasible(&set)?;
+    let snapped = corner_positions(&pieces, raw, &set);
+    set.slide = match &snapped {
+        Some(u) => u[0] / set.pitch,
+        None => auto_slide(&pieces, raw, &set),
+    };
     let mut warnings = Vec::new();
     let mut outs = Vec::with_capacity(2);
     for w in &pieces {
-        let connectors = connector_positions(set.start[w.index], set.slide, w.perimeter(), set.count);
+        let connectors = match &snapped {
+            Some(u) => u.iter().map(|&x| set.start[w.index] + x).collect(),
+            None => connector_positions(set.start[w.index], set.slide, w.perimeter(), set.count),
+        };
         let stations = locate_many(&w.table, &connectors);
+        // The cut line with a seam allowance, refused when it crosses itself.
+        let cut = if set.allowance > 0.0 {
+            let c = allowance::outline(w, &set);
+            allowance::check(w, &set, &c.1)?;
+            Some(c)
+        } else {
+            None
+        };
         // The new edge, in walking direction, with the connector of every segment.
         let built: Option<(Contour, Vec<CubicBez>, Vec<usize>)> = match set.kind {
-            Kind::Stitch => None,
+            Kind::Stitch => cut,
             Kind::Teeth | Kind::Hybrid => Some(teeth::outline(w, &connectors, &set, (w.index == 0) != set.invert)),
-            Kind::Leaves => leaves::outline(w, &connectors, &set),
+            Kind::Leaves => leaves::outline(w, &connectors, &set).or(cut),
         };
-        if let Some((_, segs, tags)) = &built {
+        if let (Some((_, segs, tags)), true) = (&built, set.kind != Kind::Stitch) {
             let what = if set.kind == Kind::Leaves { "leaves" } else { "teeth" };
             let pairs = warnings::collisions(segs, tags, 8);
             let names: Vec<String> = pairs
@@ -181,23 +297,40 @@ pub fn connect(a: &Contour, b: &Contour, raw: &RawOptions) -> Result<Connection>
             }
         }
         let input_ccw = (w.turn > 0.0) != w.reversed;
+        let edge_segs: Vec<CubicBez> = match &built {
+            Some((_, segs, _)) => segs.clone(),
+            None => w.contour.segments().collect(),
+        };
+        let edge = warnings::Edge::new(edge_segs);
         let mut holes = Vec::new();
         let label_side = if set.kind.has_holes() { stitch::side(&set) } else { 1.0 };
         if set.kind.has_holes() {
             let centers = stitch::centers(w, &stations, &set);
-            let edge_segs: Vec<CubicBez> = match &built {
-                Some((_, segs, _)) => segs.clone(),
-                None => w.contour.segments().collect(),
-            };
-            let edge = warnings::Edge::new(edge_segs);
             warnings.extend(warnings::holes(w.name(), &centers, 0.5 * set.diameter, &edge, !set.invert));
             holes = stitch::holes(&centers, &set, input_ccw);
         }
-        let (labels, marks) = annotate(w, &stations, &set, label_side);
+        let slots = if set.kind == Kind::Leaves { leaves::slots(w, &stations, &set, input_ccw) } else { Vec::new() };
+        let discs: Vec<(Point, f64)> = holes.iter().map(|h| (h.center, 0.5 * h.diameter)).collect();
+        let slot_boxes: Vec<labels::LabelBox> = slots.iter().map(|s| s.bounds()).collect();
+        let obstacles = labels::Obstacles { holes: &discs, slots: &slot_boxes, edge: &edge, inside: label_side > 0.0 };
+        let (mut labels, marks, mut crowded) = annotate(w, &stations, &set, label_side, &obstacles);
+        if raw.labels == Some(false) {
+            labels.clear();
+            crowded.clear();
+        }
+        if !crowded.is_empty() {
+            warnings.push(format!(
+                "On the {}, the numbers of connectors {} do not fit clear of the holes, slots and edge even at {} of their size: they are drawn small and may touch; use fewer connectors or switch the numbers off.",
+                w.name(),
+                warnings::list(&crowded),
+                "40 %"
+            ));
+        }
         let outline = built.map(|(c, _, _)| if w.reversed { c.reversed() } else { c });
-        outs.push(PieceOut { outline, holes, labels, marks });
+        let seam = (set.allowance > 0.0).then(|| if w.reversed { w.contour.reversed() } else { w.contour.clone() });
+        outs.push(PieceOut { outline, holes, slots, seam, labels, marks });
     }
     let second = outs.pop().expect("two pieces");
     let first = outs.pop().expect("two pieces");
-    Ok(Connection { count: set.count, pitch: set.pitch, pieces: [first, second], warnings })
+    Ok(Connection { count: set.count, pitch: set.pitch, slide: set.slide, pieces: [first, second], warnings })
 }

@@ -7,23 +7,72 @@
 //! | option     | default                         | kinds                 |
 //! |------------|---------------------------------|-----------------------|
 //! | `kind`     | `"stitch"`                      |                       |
-//! | `slide`    | `0` (connector 0 exactly at `start`) |                  |
+//! | `slide`    | `0`, shifted clear of corners when neither `slide` nor `start` is given ([`super::phase`]) | |
 //! | `start`    | `[0, 0]` (the first anchors)    |                       |
 //! | `diameter` | `p / 4`                         | stitch, hybrid        |
 //! | `inset`    | `p / 2` (stitch), `length / 2 + p / 2` (hybrid) | stitch, hybrid |
-//! | `length`   | `p / 2` (teeth, hybrid), `3p / 4` (leaves) | teeth, hybrid, leaves |
-//! | `angle`    | `90` degrees (square crenellations) | teeth, hybrid     |
-//! | `invert`   | `false`                         |                       |
+//! | `length`   | `p / 2` (teeth, hybrid), `3p / 4` (tab leaves), `p` (locking leaves) | teeth, hybrid, leaves |
+//! | `angle`    | `90` degrees (square crenellations; above 90 a dovetail) | teeth, hybrid |
+//! | `leaf`     | `"tab"` (a glued tab; `"lock"`: a bulb on a neck and a slot on the other piece) | leaves |
+//! | `allowance`| `0` (the cut line is the seam line) | stitch, leaves  |
+//! | `invert`   | `false` (its meaning per kind: [`invert_meaning`]) |   |
 //! | `kerf`     | `0`                             |                       |
 //! | `accuracy` | [`DEFAULT_ACCURACY`](crate::arclen::DEFAULT_ACCURACY) (relative) | |
 //!
-//! Exactly one of `count` and `pitch` must be given. A `pitch` is rounded to the nearest whole
-//! number of connectors (at least 1) and then adjusted so that it divides the perimeter exactly.
+//! Exactly one of `count` and `pitch` must be given (hosts start from [`DEFAULT_COUNT`]). A `pitch`
+//! is rounded to the nearest whole number of connectors (at least 1; for leaves, which alternate
+//! between the pieces, the nearest even number) and then adjusted so that it divides the perimeter
+//! exactly. An odd `count` of leaves is refused, naming the nearest even counts: with an odd
+//! count two neighbouring leaves would stand on the same piece where the seam closes.
+//! The table is exported as data by [`crate::api::defaults`], which every host reads.
 
-use crate::error::{Error, Result};
+use crate::error::{len, Error, Result};
 
 /// Most connectors accepted on one seam (more is surely a unit mistake).
 pub const MAX_COUNT: usize = 10_000;
+
+/// The number of connectors every host starts with.
+pub const DEFAULT_COUNT: usize = 24;
+
+/// Default flank angle of teeth, degrees: square crenellations.
+pub const DEFAULT_ANGLE: f64 = 90.0;
+
+/// Defaults of the sizes as fractions of the pitch `p` (and of the length, for the hybrid inset).
+pub const DIAMETER_PER_PITCH: f64 = 0.25;
+pub const INSET_PER_PITCH: f64 = 0.5;
+pub const TEETH_LENGTH_PER_PITCH: f64 = 0.5;
+pub const TAB_LENGTH_PER_PITCH: f64 = 0.75;
+pub const LOCK_LENGTH_PER_PITCH: f64 = 1.0;
+
+/// What `invert` does for each kind, in the words a host shows next to its checkbox.
+pub fn invert_meaning(kind: Kind) -> &'static str {
+    match kind {
+        Kind::Stitch => "Holes outside the piece (on the other side of the seam line)",
+        Kind::Teeth | Kind::Hybrid => "Swap teeth and gaps between the pieces (A starts with a gap)",
+        Kind::Leaves => "Swap which piece carries each leaf (A starts with a landing spot)",
+    }
+}
+
+/// How a leaf is shaped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Leaf {
+    /// Straight sides and a round cap, for gluing.
+    Tab,
+    /// A round head on a narrower neck; the other piece gets a slot that holds the neck.
+    Lock,
+}
+
+impl Leaf {
+    pub const NAMES: [&'static str; 2] = ["tab", "lock"];
+
+    pub fn parse(name: Option<&str>) -> Result<Leaf> {
+        match name {
+            None | Some("tab") => Ok(Leaf::Tab),
+            Some("lock") => Ok(Leaf::Lock),
+            Some(other) => Err(Error::Option { name: "leaf", reason: format!("must be \"tab\" (glued) or \"lock\" (a head on a neck, locked in a slot), got \"{other}\"") }),
+        }
+    }
+}
 
 /// What kind of connector to place.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -80,9 +129,13 @@ pub struct RawOptions {
     pub diameter: Option<f64>,
     pub length: Option<f64>,
     pub angle: Option<f64>,
+    pub leaf: Option<String>,
+    pub allowance: Option<f64>,
     pub invert: Option<bool>,
     pub kerf: Option<f64>,
     pub accuracy: Option<f64>,
+    /// `false`: the host draws no numbers, so none are laid out or warned about.
+    pub labels: Option<bool>,
 }
 
 /// Checked options with every default filled in, for a seam of known perimeter.
@@ -100,8 +153,12 @@ pub struct Settings {
     pub diameter: f64,
     /// Teeth: gap bottom to tooth tip. Leaves: how far a tab stands out of the edge.
     pub length: f64,
-    /// Teeth flank angle against the edge, radians, in (0, π/2].
+    /// Teeth flank angle against the edge inside the tooth, radians, in (0, π): π/2 square,
+    /// less tapered, more a dovetail (wider at the tip).
     pub angle: f64,
+    pub leaf: Leaf,
+    /// Distance from the seam line out to the cut line.
+    pub allowance: f64,
     pub invert: bool,
     pub kerf: f64,
 }
@@ -115,7 +172,7 @@ fn positive(name: &'static str, v: Option<f64>, default: f64) -> Result<f64> {
     match v {
         None => Ok(default),
         Some(x) if x.is_finite() && x > 0.0 => Ok(x),
-        Some(x) => Err(bad(name, format!("must be a positive number, got {x}"))),
+        Some(x) => Err(bad(name, format!("must be a positive number, got {}", len(x)))),
     }
 }
 
@@ -126,6 +183,25 @@ pub fn kind(raw: &RawOptions) -> Result<Kind> {
 
 /// Number of connectors from `count` or `pitch` (exactly one of them) on a seam of `perimeter`.
 pub fn count(raw: &RawOptions, perimeter: f64) -> Result<usize> {
+    let n = plain_count(raw, perimeter)?;
+    if kind(raw)? == Kind::Leaves && n % 2 == 1 {
+        if raw.pitch.is_some() {
+            // The nearest even count to perimeter / pitch.
+            let x = perimeter / raw.pitch.unwrap_or(1.0);
+            let even = 2.0 * (x / 2.0).round().max(1.0);
+            return Ok((even as usize).min(MAX_COUNT));
+        }
+        let names = if n == 1 { "2".to_string() } else { format!("{} or {}", n - 1, n + 1) };
+        return Err(bad(
+            "count",
+            format!("leaves alternate between the two pieces, so their number must be even, got {n}: use {names}"),
+        ));
+    }
+    Ok(n)
+}
+
+/// `count` or `pitch` as a whole number of connectors, for any kind.
+fn plain_count(raw: &RawOptions, perimeter: f64) -> Result<usize> {
     match (raw.count, raw.pitch) {
         (Some(_), Some(_)) => Err(bad("count", "give either `count` or `pitch`, not both".into())),
         (None, None) => Err(bad("count", "give either `count` (number of connectors) or `pitch` (distance between them)".into())),
@@ -138,13 +214,13 @@ pub fn count(raw: &RawOptions, perimeter: f64) -> Result<usize> {
         }
         (None, Some(p)) => {
             if !(p.is_finite() && p > 0.0) {
-                return Err(bad("pitch", format!("must be a positive number, got {p}")));
+                return Err(bad("pitch", format!("must be a positive number, got {}", len(p))));
             }
             let n = (perimeter / p).round().max(1.0);
             if n > MAX_COUNT as f64 {
                 return Err(bad(
                     "pitch",
-                    format!("{p} on a perimeter of {perimeter} gives {n} connectors; at most {MAX_COUNT} are allowed"),
+                    format!("{} on a perimeter of {} gives {n} connectors; at most {MAX_COUNT} are allowed", len(p), len(perimeter)),
                 ));
             }
             Ok(n as usize)
@@ -167,23 +243,44 @@ pub fn resolve(raw: &RawOptions, perimeter: f64) -> Result<Settings> {
         Some([a, b]) if a.is_finite() && b.is_finite() => [a, b],
         Some([a, b]) => return Err(bad("start", format!("must be two finite arc lengths [sA, sB], got [{a}, {b}]"))),
     };
-    let default_length = if kind == Kind::Leaves { 0.75 * pitch } else { 0.5 * pitch };
+    let leaf = Leaf::parse(raw.leaf.as_deref())?;
+    let default_length = match (kind, leaf) {
+        (Kind::Leaves, Leaf::Tab) => TAB_LENGTH_PER_PITCH * pitch,
+        (Kind::Leaves, Leaf::Lock) => LOCK_LENGTH_PER_PITCH * pitch,
+        _ => TEETH_LENGTH_PER_PITCH * pitch,
+    };
     let length = positive("length", raw.length, default_length)?;
-    let diameter = positive("diameter", raw.diameter, 0.25 * pitch)?;
-    let default_inset = if kind == Kind::Hybrid { 0.5 * length + 0.5 * pitch } else { 0.5 * pitch };
+    let diameter = positive("diameter", raw.diameter, DIAMETER_PER_PITCH * pitch)?;
+    let default_inset = if kind == Kind::Hybrid { 0.5 * length + INSET_PER_PITCH * pitch } else { INSET_PER_PITCH * pitch };
     let inset = positive("inset", raw.inset, default_inset)?;
     let angle = match raw.angle {
-        None => 90.0,
-        Some(a) if a.is_finite() && a > 0.0 && a <= 90.0 => a,
-        Some(a) => return Err(bad("angle", format!("must be a flank angle in degrees, more than 0 and at most 90, got {a}"))),
+        None => DEFAULT_ANGLE,
+        Some(a) if a.is_finite() && a > 0.0 && a < 180.0 => a,
+        Some(a) => {
+            return Err(bad(
+                "angle",
+                format!("must be a flank angle in degrees, more than 0 and less than 180 (90 square, more than 90 a dovetail), got {a}"),
+            ))
+        }
     };
+    let allowance = match raw.allowance {
+        None => 0.0,
+        Some(a) if a.is_finite() && a >= 0.0 => a,
+        Some(a) => return Err(bad("allowance", format!("must be zero or a positive distance from the seam line to the cut line, got {}", len(a)))),
+    };
+    if allowance > 0.0 && kind.has_teeth() {
+        return Err(bad(
+            "allowance",
+            "teeth interlock on the seam line itself, so they take no seam allowance: set it to 0, or use stitch holes or leaves".into(),
+        ));
+    }
     let kerf = match raw.kerf {
         None => 0.0,
         Some(k) if k.is_finite() && k >= 0.0 => k,
-        Some(k) => return Err(bad("kerf", format!("must be zero or a positive cut width, got {k}"))),
+        Some(k) => return Err(bad("kerf", format!("must be zero or a positive cut width, got {}", len(k)))),
     };
     if kind.has_holes() && kerf >= diameter {
-        return Err(bad("kerf", format!("{kerf} is not smaller than the hole diameter {diameter}: the holes would vanish")));
+        return Err(bad("kerf", format!("{} is not smaller than the hole diameter {}: the holes would vanish", len(kerf), len(diameter))));
     }
     Ok(Settings {
         kind,
@@ -195,6 +292,8 @@ pub fn resolve(raw: &RawOptions, perimeter: f64) -> Result<Settings> {
         diameter,
         length,
         angle: angle.to_radians(),
+        leaf,
+        allowance,
         invert: raw.invert.unwrap_or(false),
         kerf,
     })

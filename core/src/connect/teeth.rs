@@ -1,5 +1,9 @@
 //! Teeth: interlocking crenellations built into both outlines.
 //!
+//! The flank angle θ is measured inside the tooth, against the edge: 90° square, less a tooth
+//! narrowing toward its tip, more a dovetail widening toward its tip, which holds the other
+//! piece's tooth behind its corners (the other piece's gap is the same dovetail turned round).
+//!
 //! Picture the seam flattened: `u` is arc length along the walk, `v` the distance out of the
 //! piece along the outward normal. The original edge is `v = 0`, the line the two pieces meet
 //! on. A piece's new edge is a trapezoid wave: tooth tops at `v = +L/2`, gap bottoms at
@@ -19,7 +23,7 @@ use super::options::Settings;
 use super::piece::Walked;
 use super::spacing::locate_many;
 use crate::contour::Contour;
-use crate::error::{Error, Result};
+use crate::error::{deg, len, Error, Result};
 use kurbo::{CubicBez, Point};
 
 /// The profile of one tooth in `(u, v)`: rising flank bottom and top, falling flank top and
@@ -32,22 +36,57 @@ fn tooth(set: &Settings, pitch: f64) -> [(f64, f64); 4] {
     [(-half + bottom * cot, bottom), (-half + top * cot, top), (half - top * cot, top), (half - bottom * cot, bottom)]
 }
 
-/// Checks that tooth tops and gap bottoms keep a positive width.
-pub fn check(set: &Settings) -> Result<()> {
+/// Whether every width of the wave stays positive: tooth top and base, gap top and bottom. A
+/// tapered tooth (angle < 90°) fails when its top vanishes, a dovetail (angle > 90°) when its
+/// base does or the tips of neighbouring dovetails meet (the top wider than the pitch).
+fn fits(set: &Settings) -> bool {
     let t = tooth(set, set.pitch);
-    let top = t[2].0 - t[1].0;
-    let gap = set.pitch - (t[3].0 - t[0].0);
-    if top <= 0.0 || gap <= 0.0 {
-        return Err(Error::Infeasible {
-            reason: format!(
-                "Teeth of length {} with {}° flanks do not fit a pitch of {}: the flanks meet. Use fewer connectors, shorter teeth or steeper flanks (angle closer to 90).",
-                set.length,
-                set.angle.to_degrees(),
-                set.pitch
-            ),
-        });
+    let (top, base) = (t[2].0 - t[1].0, t[3].0 - t[0].0);
+    top > 0.0 && base > 0.0 && set.pitch - top > 0.0 && set.pitch - base > 0.0
+}
+
+/// The range of flank angles (degrees) that fit these teeth and this pitch, found by bisection
+/// from 90° outwards (`fits` is monotone in the distance from 90°), or `None` when not even
+/// square teeth fit.
+fn angle_range(set: &Settings) -> Option<(f64, f64)> {
+    let at = |deg: f64| fits(&Settings { angle: deg.to_radians(), ..set.clone() });
+    if !at(90.0) {
+        return None;
     }
-    Ok(())
+    let edge = |far: f64| {
+        let (mut ok, mut bad) = (90.0, far);
+        for _ in 0..60 {
+            let mid = 0.5 * (ok + bad);
+            if at(mid) { ok = mid } else { bad = mid }
+        }
+        ok
+    };
+    Some((edge(0.0), edge(180.0)))
+}
+
+/// Checks that the teeth keep a positive width everywhere (see [`fits`]); the message names the
+/// flank angles that would fit.
+pub fn check(set: &Settings) -> Result<()> {
+    if fits(set) {
+        return Ok(());
+    }
+    let fix = match angle_range(set) {
+        Some((lo, hi)) => format!(
+            "At this pitch the flank angle must be between {}° and {}° (90 is square, more than 90 a dovetail): use fewer connectors, shorter teeth or an angle in that range.",
+            deg((lo * 10.0).ceil() / 10.0),
+            deg((hi * 10.0).floor() / 10.0)
+        ),
+        None => "Even square teeth do not fit: use fewer connectors or a smaller kerf.".into(),
+    };
+    Err(Error::Infeasible {
+        reason: format!(
+            "Teeth of length {} with {}° flanks do not fit a pitch of {}: the {}. {fix}",
+            len(set.length),
+            deg(set.angle.to_degrees()),
+            len(set.pitch),
+            if set.angle > std::f64::consts::FRAC_PI_2 { "dovetails' corners collide" } else { "flanks meet" }
+        ),
+    })
 }
 
 /// Tooth centres (unwrapped arc lengths) of a piece: at the connectors when `own`, else half a

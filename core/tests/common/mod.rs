@@ -288,3 +288,34 @@ pub fn segments_and_lengths(pieces: &[PathDto]) -> ([Vec<Cubic>; 2], Vec<Vec<f64
     let perimeter = ksum(lens[0].iter().copied());
     (segs, lens, perimeter)
 }
+
+/// The closed path as a polyline of `per_seg` chords per segment (uniform in t), first point
+/// not repeated.
+pub fn flatten(p: &PathDto, per_seg: usize) -> Vec<P> {
+    cubics(p).iter().flat_map(|c| (0..per_seg).map(move |j| eval(c, j as f64 / per_seg as f64))).collect()
+}
+
+/// Even–odd point-in-polygon test (crossings of a ray to +x).
+pub fn inside_poly(poly: &[P], q: P) -> bool {
+    let mut inside = false;
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        if (a[1] > q[1]) != (b[1] > q[1]) && q[0] < a[0] + (q[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]) {
+            inside = !inside;
+        }
+    }
+    inside
+}
+
+/// Distance from `q` to the segment ab.
+pub fn dist_seg(q: P, a: P, b: P) -> f64 {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let l2 = dx * dx + dy * dy;
+    let t = if l2 == 0.0 { 0.0 } else { (((q[0] - a[0]) * dx + (q[1] - a[1]) * dy) / l2).clamp(0.0, 1.0) };
+    (q[0] - a[0] - t * dx).hypot(q[1] - a[1] - t * dy)
+}
+
+/// Distance from `q` to a closed polyline.
+pub fn dist_poly(poly: &[P], q: P) -> f64 {
+    (0..poly.len()).map(|i| dist_seg(q, poly[i], poly[(i + 1) % poly.len()])).fold(f64::INFINITY, f64::min)
+}

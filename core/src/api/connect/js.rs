@@ -37,22 +37,24 @@ export function dformer_build_connect(f, warnings) {
   };
   const piece = () => {
     const outline = path();
-    const holes = [], labels = [], marks = [];
+    const holes = [], slots = [], labels = [], marks = [];
     for (let k = 0, n = f[i++]; k < n; k++) {
       const center = [f[i], f[i + 1]], diameter = f[i + 2];
       i += 3;
       holes.push({ center, diameter, path: path() });
     }
+    for (let k = 0, n = f[i++]; k < n; k++) slots.push(path());
+    const seam = f[i++] === 1 ? path() : undefined;
     for (let k = 0, n = f[i++]; k < n; k++) {
-      labels.push({ text: String(f[i]), at: [f[i + 1], f[i + 2]], angle: f[i + 3] });
-      i += 4;
+      labels.push({ text: String(f[i]), at: [f[i + 1], f[i + 2]], angle: f[i + 3], size: f[i + 4] });
+      i += 5;
     }
     for (let k = 0, n = f[i++]; k < n; k++) marks.push(path());
-    return { outline, holes, labels, marks };
+    return seam === undefined ? { outline, holes, slots, labels, marks } : { outline, holes, slots, seam, labels, marks };
   };
-  const count = f[i++], pitch = f[i++];
+  const count = f[i++], pitch = f[i++], slide = f[i++];
   const pieces = [piece(), piece()];
-  return { count, pitch, pieces, warnings };
+  return { count, pitch, slide, pieces, warnings };
 }
 
 // The pieces as one Float64Array: [count, then per piece: closed (1/0), n, then per point
@@ -164,20 +166,23 @@ fn path_len(p: &PathDto) -> usize {
 /// The result as plain JS objects, or `None` when a label is not a plain connector number
 /// (then the caller falls back to serde).
 pub fn to_js(dto: &ConnectDto) -> Option<JsValue> {
-    let len = 2 + dto
+    let len = 3 + dto
         .pieces
         .iter()
         .map(|p| {
             path_len(&p.outline)
-                + 3
+                + 5
                 + p.holes.iter().map(|h| 3 + path_len(&h.path)).sum::<usize>()
-                + 4 * p.labels.len()
+                + p.slots.iter().map(path_len).sum::<usize>()
+                + p.seam.as_ref().map(path_len).unwrap_or(0)
+                + 5 * p.labels.len()
                 + p.marks.iter().map(path_len).sum::<usize>()
         })
         .sum::<usize>();
     let mut f = Vec::with_capacity(len);
     f.push(dto.count as f64);
     f.push(dto.pitch);
+    f.push(dto.slide);
     for p in &dto.pieces {
         path(&mut f, &p.outline);
         f.push(p.holes.len() as f64);
@@ -186,11 +191,20 @@ pub fn to_js(dto: &ConnectDto) -> Option<JsValue> {
             f.push(h.diameter);
             path(&mut f, &h.path);
         }
+        f.push(p.slots.len() as f64);
+        for s in &p.slots {
+            path(&mut f, s);
+        }
+        f.push(p.seam.is_some() as u8 as f64);
+        if let Some(s) = &p.seam {
+            path(&mut f, s);
+        }
         f.push(p.labels.len() as f64);
         for l in &p.labels {
             f.push(label_number(&l.text)? as f64);
             f.extend_from_slice(&l.at);
             f.push(l.angle);
+            f.push(l.size);
         }
         f.push(p.marks.len() as f64);
         for m in &p.marks {
