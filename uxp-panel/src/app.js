@@ -583,6 +583,7 @@
     if (host.kind === 'browser' && settings.unit) host.setUnit(settings.unit);
     syncControls();
     DF.core.load().then(function () {
+      $('#version').textContent = DF.core.version() ? 'D-former ' + DF.core.version() : '';
       return host.start({ selection: onSelection, theme: applyTheme });
     }).then(function () {
       // The browser app opens on the first sample, so there is something to look at right away.

@@ -116,6 +116,10 @@
     simulate: function (pieces, options) {
       return call('simulate', [pieces, options]);
     },
+    /** The core's version (the workspace Cargo.toml's), or '' from a build without it. */
+    version: function () {
+      return api && typeof api.version === 'function' ? api.version() : '';
+    },
     has: function (name) {
       return !!api && typeof api[name] === 'function';
     },
