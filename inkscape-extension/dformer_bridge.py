@@ -39,6 +39,7 @@ def locate_binary():
         raise CoreError(f"DFORMER_BIN is set to {explicit!r}, but there is no file there.")
     beside = os.path.join(HERE, EXE)
     if os.path.isfile(beside):
+        _make_executable(beside)
         return beside, "bundled with the extension"
     on_path = shutil.which("dformer")
     if on_path:
@@ -49,6 +50,19 @@ def locate_binary():
         "dformer folder into Inkscape's user extensions folder again (see the D-former README, "
         "Download and install); developers can build it with `cargo build --release -p dformer-cli`."
     )
+
+
+def _make_executable(path):
+    """Inkscape's Extension Manager (Extensions > Manage Extensions, "install from file") writes a
+    zip's files without their permissions, so the bundled binary arrives not executable on
+    Linux and macOS: give it back the executable bits its owner may set (no-op on Windows)."""
+    if os.name == "nt" or os.access(path, os.X_OK):
+        return
+    try:
+        mode = os.stat(path).st_mode
+        os.chmod(path, mode | ((mode & 0o444) >> 2))
+    except OSError:
+        pass  # running it then fails with a message that names it
 
 
 def find_binary():

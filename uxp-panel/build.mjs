@@ -138,5 +138,5 @@ writeFileSync(
     `minimum: CEP ${cep.cep} (Chromium ${cep.chromium}); Illustrator ${cep.illustrator || 'release not documented by Adobe'}\n`
 );
 const single = join(dist, 'd-former.html');
-writeFileSync(single, singleHtml(web));
+writeFileSync(single, singleHtml(web, version));
 console.log(`[panel] extension folder: ${ext} (version ${version})\n[panel] browser app: ${join(web, 'index.html')}, and as one file ${single}`);

@@ -3,6 +3,7 @@
 
 import os
 import re
+import shutil
 import subprocess
 import unittest
 import zipfile
@@ -42,3 +43,18 @@ def unzip(path, dest):
 def read_member(path, name):
     with zipfile.ZipFile(path) as z:
         return z.read(name)
+
+
+def wine():
+    """Debian's wine64 loader (package wine64 puts it in /usr/lib/wine) and the environment for
+    a throw-away prefix in `prefix`: no debug chatter, no Mono/Gecko install prompts, no display."""
+    for candidate in (shutil.which("wine64"), "/usr/lib/wine/wine64", shutil.which("wine")):
+        if candidate and os.path.isfile(candidate):
+            return candidate
+    raise AssertionError("wine64 is not installed: run `bash scripts/setup-release.sh`")
+
+
+def wine_env(prefix, **extra):
+    env = dict(os.environ, WINEPREFIX=prefix, WINEDEBUG="-all", WINEDLLOVERRIDES="mscoree,mshtml=", **extra)
+    env.pop("DISPLAY", None)
+    return env

@@ -11,16 +11,9 @@ import subprocess
 import tempfile
 import unittest
 
-from support import SAMPLE, artifact, unzip
+from support import SAMPLE, artifact, unzip, wine, wine_env
 
 NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
-
-
-def wine_binary():
-    for candidate in (shutil.which("wine64"), "/usr/lib/wine/wine64", shutil.which("wine")):
-        if candidate and os.path.isfile(candidate):
-            return candidate
-    raise AssertionError("wine64 is not installed: run `bash scripts/setup-release.sh`")
 
 
 def same_to_round_off(test, what, linux, windows):
@@ -42,10 +35,8 @@ class WindowsExeUnderWine(unittest.TestCase):
         cls.linux = os.path.join(cls.tmp, "linux-x86_64", "dformer", "dformer")
         cls.exe = os.path.join(cls.tmp, "windows-x86_64", "dformer", "dformer.exe")
         shutil.copy(SAMPLE, os.path.join(cls.tmp, "sample.svg"))
-        cls.env = dict(os.environ, WINEPREFIX=os.path.join(cls.tmp, "wineprefix"), WINEDEBUG="-all",
-                       WINEDLLOVERRIDES="mscoree,mshtml=")  # no Mono/Gecko install prompts
-        cls.env.pop("DISPLAY", None)
-        cls.wine = wine_binary()
+        cls.env = wine_env(os.path.join(cls.tmp, "wineprefix"))
+        cls.wine = wine()
 
     @classmethod
     def tearDownClass(cls):

@@ -16,8 +16,9 @@ function raw(text, tag) {
   return out;
 }
 
-/** Returns the single-file page for the app folder `dir` (its index.html and the files it names). */
-export function singleHtml(dir) {
+/** Returns the single-file page for the app folder `dir` (its index.html and the files it names),
+ * stamped with the project version (`<meta name="generator">`; the footer shows the core's own). */
+export function singleHtml(dir, version) {
   const html = readFileSync(join(dir, 'index.html'), 'utf8');
   const read = (href) => {
     const file = join(dir, href);
@@ -25,6 +26,7 @@ export function singleHtml(dir) {
     return readFileSync(file, 'utf8');
   };
   const out = html
+    .replace('<meta charset="utf-8">', `<meta charset="utf-8">\n<meta name="generator" content="D-former ${version}">`)
     .replace(/<link rel="stylesheet" href="([^"]+)">/g, (_, href) => `<style>/* ${href} */\n${raw(read(href), 'style')}</style>`)
     .replace(/<script src="([^"]+)"><\/script>/g, (_, src) => `<script>/* ${src} */\n${raw(read(src), 'script')}</script>`);
   const left = /<(?:script|link|img)\b[^>]*\b(?:src|href)="(?!data:|#)[^"]+"/i.exec(out);
