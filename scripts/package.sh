@@ -52,10 +52,11 @@ rm -rf "$out" "$stage"
 mkdir -p "$out" "$stage"
 
 # --- 1. the dformer program for each platform (release profile: LTO, one codegen unit, stripped)
-build() { nice cargo build --quiet --release --locked -p dformer-cli --target "$1"; }
-timed "dformer for Linux x86_64 (musl, static)" build x86_64-unknown-linux-musl
+# Linux (musl: static) and Windows (MinGW's linker) in one cargo run, so the two single-threaded
+# LTO links at the end run side by side on two cores.
 export CARGO_TARGET_X86_64_PC_WINDOWS_GNU_LINKER=x86_64-w64-mingw32-gcc
-timed "dformer.exe for Windows x86_64 (MinGW)" build x86_64-pc-windows-gnu
+timed "dformer for Linux x86_64 (musl, static) and Windows x86_64 (MinGW)" \
+  nice cargo build --quiet --release --locked -p dformer-cli --target x86_64-unknown-linux-musl --target x86_64-pc-windows-gnu
 # cargo-zigbuild builds aarch64-apple-darwin and x86_64-apple-darwin with zig as the linker
 # (zig ships macOS's libSystem stubs, so no Apple SDK is needed) and joins them into one fat file.
 # Without a deployment target zig would stamp its own newest macOS (15.0) as the minimum; 11.0
