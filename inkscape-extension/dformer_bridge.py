@@ -39,7 +39,7 @@ def locate_binary():
         raise CoreError(f"DFORMER_BIN is set to {explicit!r}, but there is no file there.")
     beside = os.path.join(HERE, EXE)
     if os.path.isfile(beside):
-        _make_executable(beside)
+        _prepare_bundled(beside)
         return beside, "bundled with the extension"
     on_path = shutil.which("dformer")
     if on_path:
@@ -52,17 +52,29 @@ def locate_binary():
     )
 
 
-def _make_executable(path):
-    """Inkscape's Extension Manager (Extensions > Manage Extensions, "install from file") writes a
-    zip's files without their permissions, so the bundled binary arrives not executable on
-    Linux and macOS: give it back the executable bits its owner may set (no-op on Windows)."""
-    if os.name == "nt" or os.access(path, os.X_OK):
-        return
-    try:
-        mode = os.stat(path).st_mode
-        os.chmod(path, mode | ((mode & 0o444) >> 2))
-    except OSError:
-        pass  # running it then fails with a message that names it
+# macOS's tool for extended attributes (a module constant so the tests can stand in for it).
+XATTR = "/usr/bin/xattr"
+
+
+def _prepare_bundled(path):
+    """Makes the bundled binary runnable as installed by a user:
+
+    - Inkscape's Extension Manager (Extensions > Manage Extensions, install from file) writes a
+      zip's files without their permissions, so on Linux and macOS the binary arrives not
+      executable: give it back the executable bits its owner may set (nothing to do on Windows);
+    - on macOS, files unzipped from a download carry the com.apple.quarantine flag, and
+      Gatekeeper refuses to start a quarantined program that Apple has not notarized: the user
+      installed this extension on purpose, so the flag is cleared from its own bundled program
+      (only that file), as `xattr -d com.apple.quarantine` would.
+    Failures are ignored: running it then fails with a message that names it."""
+    if os.name != "nt" and not os.access(path, os.X_OK):
+        try:
+            mode = os.stat(path).st_mode
+            os.chmod(path, mode | ((mode & 0o444) >> 2))
+        except OSError:
+            pass
+    if sys.platform == "darwin" and os.path.exists(XATTR):
+        subprocess.run([XATTR, "-d", "com.apple.quarantine", path], capture_output=True, check=False)
 
 
 def find_binary():

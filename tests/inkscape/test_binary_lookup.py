@@ -85,6 +85,17 @@ class BinaryLookup(unittest.TestCase):
         self.assertEqual(self.bridge().run_batch([{"op": "x"}]), [{"ok": 1}])
         self.assertEqual(stat.S_IMODE(os.stat(bundled).st_mode), 0o755)
 
+    def test_on_macos_the_bundled_binary_loses_its_download_quarantine_flag(self):
+        bundled = os.path.join(self.ext, "dformer")
+        program(bundled, "echo '[{\"ok\": 1}]'")
+        program(os.path.join(self.bin, "xattr"), f'printf "%s\\n" "$*" >> "{self.tmp}/xattr.log"')
+        bridge = self.bridge()
+        bridge.XATTR = os.path.join(self.bin, "xattr")
+        with mock.patch.object(bridge.sys, "platform", "darwin"):
+            self.assertEqual(bridge.run_batch([{"op": "x"}]), [{"ok": 1}])
+        with open(os.path.join(self.tmp, "xattr.log")) as fh:
+            self.assertEqual(fh.read().splitlines(), [f"-d com.apple.quarantine {bundled}"])
+
     def test_a_file_that_is_no_program_says_so(self):
         bundled = os.path.join(self.ext, "dformer")
         with open(bundled, "wb") as fh:
