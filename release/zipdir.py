@@ -41,7 +41,7 @@ def main(out, root):
                 z.writestr(entry(name, st.st_mode, True), b"")
             else:
                 with open(path, "rb") as fh:
-                    z.writestr(entry(name, st.st_mode, False), fh.read(), compress_level=9)
+                    z.writestr(entry(name, st.st_mode, False), fh.read(), compresslevel=9)
 
 
 if __name__ == "__main__":

@@ -7,14 +7,16 @@ independently: perimeters by Gauss-Legendre quadrature of the exported cubics, t
 by the closed form (the periodic trapezoid rule on its parametric speed, exact to round-off).
 
 Inkscape shows whatever an extension writes to stderr in a dialog and waits, even in
---batch-process mode, and Measure always reports. So Inkscape finds `python3` first in a folder
-of this test's, where a wrapper runs Debian's /usr/bin/python3 on the same arguments and
-sends the extension's stderr to a log instead: the log holds Measure's report, and the script
-paths Inkscape started (which must be the unzipped ones)."""
+--batch-process mode, and Measure always reports. So the profile's preferences name a Python
+interpreter of this test's (Inkscape's own setting, /extensions/python-interpreter; Debian's
+Inkscape does not look for python3 on PATH), a wrapper that runs Debian's /usr/bin/python3 on the
+same arguments and sends the extension's stderr to a log instead: the log holds Measure's
+report, and the folder and script Inkscape started (which must be the unzipped ones)."""
 
 import math
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -78,11 +80,11 @@ class LinuxZipInRealInkscape(unittest.TestCase):
         os.makedirs(cls.wrap)
         cls.log = os.path.join(cls.home, "extension-stderr.log")
         with open(os.path.join(cls.wrap, "python3"), "w") as fh:
-            fh.write(f'#!/bin/sh\nprintf "RUN %s\\n" "$*" >> "{cls.log}"\nexec /usr/bin/python3 "$@" 2>> "{cls.log}"\n')
+            fh.write(f'#!/bin/sh\nprintf "RUN %s %s\\n" "$(pwd)" "$*" >> "{cls.log}"\nexec /usr/bin/python3 "$@" 2>> "{cls.log}"\n')
         os.chmod(os.path.join(cls.wrap, "python3"), 0o755)
         with open(os.path.join(cls.home, ".config", "inkscape", "preferences.xml"), "w", encoding="utf-8") as fh:
             fh.write('<?xml version="1.0" encoding="UTF-8"?>\n<inkscape version="1">\n'
-                     '  <group id="extensions" org.dformer.measure.unit="mm" org.dformer.normalize.target="largest"'
+                     f'  <group id="extensions" python-interpreter="{cls.wrap}/python3" org.dformer.measure.unit="mm" org.dformer.normalize.target="largest"'
                      ' org.dformer.connect.kind="stitch" org.dformer.connect.count="16" />\n</inkscape>\n')
 
     @classmethod
@@ -92,7 +94,7 @@ class LinuxZipInRealInkscape(unittest.TestCase):
     def env(self):
         """A user's session: the fresh HOME, nothing of D-former on PATH, no DFORMER_BIN."""
         env = {k: v for k, v in os.environ.items() if not k.startswith(("DFORMER", "XDG_", "CARGO"))}
-        env.update(HOME=self.home, PATH=f"{self.wrap}:/usr/bin:/bin")
+        env.update(HOME=self.home, PATH="/usr/bin:/bin")
         env.pop("DISPLAY", None)
         self.assertIsNone(shutil.which("dformer", path=env["PATH"]), "a dformer is on PATH: the test would not prove the bundled one runs")
         return env
@@ -101,10 +103,16 @@ class LinuxZipInRealInkscape(unittest.TestCase):
         out = os.path.join(self.home, f"out-{len(os.listdir(self.home))}.svg")
         open(self.log, "w").close()
         cmd = [XVFB, "-a", INKSCAPE, source, "--batch-process", f"--actions={actions};export-filename:{out};export-do"]
+        # A session of its own, so a timeout ends Xvfb and Inkscape too, not only xvfb-run.
+        child = subprocess.Popen(cmd, env=self.env(), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                 cwd=self.home, start_new_session=True)
         try:
-            proc = subprocess.run(cmd, env=self.env(), capture_output=True, text=True, timeout=180, check=False, cwd=self.home)
+            _, stderr = child.communicate(timeout=180)
         except subprocess.TimeoutExpired:
+            os.killpg(child.pid, signal.SIGKILL)
+            child.communicate()
             self.fail("Inkscape did not finish in 180 s (it waits on a dialog when an extension prints a message)")
+        proc = subprocess.CompletedProcess(cmd, child.returncode, "", stderr)
         with open(self.log, encoding="utf-8") as fh:
             log = fh.read()
         self.assertTrue(os.path.isfile(out), f"Inkscape wrote no {out}: exit {proc.returncode}\n{proc.stderr[-3000:]}\n{log}")
@@ -112,7 +120,8 @@ class LinuxZipInRealInkscape(unittest.TestCase):
         ran = [line for line in log.splitlines() if line.startswith("RUN ")]
         self.assertTrue(ran, f"Inkscape ran no extension script:\n{proc.stderr[-2000:]}")
         for line in ran:
-            self.assertIn(os.path.join(self.extensions, "dformer", "dformer_"), line, "Inkscape ran a script from elsewhere")
+            self.assertTrue(line.startswith(f"RUN {os.path.join(self.extensions, 'dformer')} dformer_"),
+                            f"Inkscape ran a script from elsewhere: {line}")
         self.assertNotIn("Traceback", log, log)
         self.assertNotIn("not found", log, log)
         return inkex.load_svg(out).getroot(), log
@@ -148,8 +157,7 @@ class LinuxZipInRealInkscape(unittest.TestCase):
         self.assertLess(abs(a - b), 1e-9 * b, f"wanted equal perimeters, got {a} and {b}")
         self.assertLess(abs(b - ellipse_perimeter(75, 45)), 1e-6 * b, "the largest (the ellipse) sets the perimeter")
         normalized = os.path.join(self.home, "normalized.svg")
-        with open(normalized, "wb") as fh:
-            fh.write(inkex.etree.tostring(svg))
+        svg.getroottree().write(normalized)
         svg, _ = self.inkscape(normalized, "select-by-id:pebble,ellipse;org.dformer.connect.noprefs")
         for eid in ("pebble", "ellipse"):
             holes = svg.getElementById(f"dformer-cut-{eid}")
