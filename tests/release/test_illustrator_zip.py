@@ -131,12 +131,14 @@ class IllustratorZip(unittest.TestCase):
                          r"/v PlayerDebugMode /t REG_SZ /d 1 /f", text)
         self.assertIsNotNone(loop, "no reg add of PlayerDebugMode (REG_SZ 1) under HKCU\\Software\\Adobe\\CSXS.N")
         self.assertEqual(loop.group(1).split(), CSXS_VERSIONS)
-        self.assertEqual(text.count("reg add"), 1, "the installer must change nothing else in the registry")
+        commands = [ln for ln in text.split("\r\n") if not ln.lstrip().lower().startswith("rem ")]
+        self.assertEqual(sum("reg " in ln for ln in commands), 1, "the installer must change nothing else in the registry")
         with open(os.path.join(self.top, "uninstall-windows.cmd"), "rb") as fh:
             un = fh.read().decode("ascii")
         self.assertIn(r'set "DEST=%APPDATA%\Adobe\CEP\extensions\com.dformer.panel"', un)
         self.assertIn('rmdir /s /q "%DEST%"', un)
-        self.assertNotIn("reg ", un)
+        commands = [ln for ln in un.split("\r\n") if not ln.lstrip().lower().startswith("rem ")]
+        self.assertFalse([ln for ln in commands if "reg " in ln], "uninstall must not touch the registry")
 
     def test_windows_installer_run_by_cmd_under_wine_installs_and_uninstalls(self):
         """The same script run for real by cmd.exe (wine's): the files land in the user's
@@ -153,10 +155,12 @@ class IllustratorZip(unittest.TestCase):
             installed = os.path.join(appdata, "Adobe", "CEP", "extensions", ID)
             rel = lambda root: sorted(os.path.relpath(os.path.join(d, f), root) for d, _, fs in os.walk(root) for f in fs)
             self.assertEqual(rel(installed), rel(panel), "cmd.exe copied other files than the panel's")
-            for v in CSXS_VERSIONS:
-                q = subprocess.run([wine(), "reg", "query", f"HKCU\\Software\\Adobe\\CSXS.{v}", "/v", "PlayerDebugMode"],
-                                   env=env, capture_output=True, timeout=300)
-                self.assertRegex(q.stdout.decode(errors="replace"), r"PlayerDebugMode\s+REG_SZ\s+1\b", f"CSXS.{v}")
+            q = subprocess.run([wine(), "reg", "query", "HKCU\\Software\\Adobe", "/s"], env=env, capture_output=True, timeout=300)
+            listing = q.stdout.decode(errors="replace").replace("\r\n", "\n")
+            keys = re.findall(r"^HKEY_CURRENT_USER\\Software\\Adobe\\(\S+)\n((?:    .*\n)*)", listing, re.M)
+            self.assertEqual(sorted(k for k, _ in keys), sorted(f"CSXS.{v}" for v in CSXS_VERSIONS), listing)
+            for key, values in keys:
+                self.assertRegex(values, r"^\s+PlayerDebugMode\s+REG_SZ\s+1\s*$", f"{key}: {values}")
             proc = subprocess.run([wine(), "cmd", "/c", "uninstall-windows.cmd"], cwd=self.top, env=env,
                                   capture_output=True, timeout=600)
             self.assertEqual(proc.returncode, 0)
