@@ -3,7 +3,8 @@
 # is missing; skips what is present. Called by `scripts/setup.sh --all` and by package.sh.
 #   - Rust standard libraries for the four release targets (rustup);
 #   - Debian: gcc-mingw-w64-x86-64 (Windows linker), musl-tools (static Linux), wine64 (runs the
-#     Windows dformer.exe in the tests), shellcheck (the macOS installer), zip/unzip;
+#     Windows dformer.exe in the tests), shellcheck (the macOS installer), unzip (the tests unzip
+#     as users do; the zips themselves are written by release/zipdir.py);
 #   - PyPI, in a venv of their own (DFORMER_RELEASE_VENV, default ~/.cache/dformer-release/venv):
 #     ziglang (zig as a cross linker with macOS's libSystem stubs) and cargo-zigbuild (drives it,
 #     and joins the two macOS binaries into one universal binary).
@@ -28,7 +29,6 @@ missing=()
 command -v x86_64-w64-mingw32-gcc >/dev/null || missing+=(gcc-mingw-w64-x86-64)
 command -v musl-gcc >/dev/null || missing+=(musl-tools)
 command -v shellcheck >/dev/null || missing+=(shellcheck)
-command -v zip >/dev/null || missing+=(zip)
 command -v unzip >/dev/null || missing+=(unzip)
 [ -x /usr/lib/wine/wine64 ] || command -v wine64 >/dev/null || missing+=(wine64)
 [ ${#missing[@]} -eq 0 ] || bash scripts/apt-install.sh "${missing[@]}"
