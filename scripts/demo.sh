@@ -5,7 +5,10 @@
 # that the Illustrator panel, the browser app and the Inkscape extension run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+# The demo runs only the native `dformer`: it needs cargo and nothing else (no WebAssembly tools,
+# no Node packages, which scripts/setup.sh would install for the panel and the tests).
+export PATH="$HOME/.cargo/bin:$PATH"
+command -v cargo >/dev/null || { echo "demo: cargo not found. Install Rust from rustup first." >&2; exit 1; }
 cargo build --quiet --release -p dformer-cli
 dformer="${CARGO_TARGET_DIR:-target}/release/dformer"
 sample=samples/pebble-and-ellipse.svg

@@ -3,7 +3,8 @@
 # Safe to run again. Used by demo.sh and test.sh; nothing else needs to be installed by hand.
 #
 #   scripts/setup.sh           toolchain for the core + Node deps (enough for the demo)
-#   scripts/setup.sh --all     also the test browser (Chromium) and Inkscape
+#   scripts/setup.sh --all     also the test browser (Chromium), Inkscape, and what the release
+#                              packages need (scripts/setup-release.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -57,12 +58,8 @@ if [ "$want_all" = 1 ]; then
   for pair in lxml:python3-lxml numpy:python3-numpy cssselect:python3-cssselect; do
     /usr/bin/python3 -c "import ${pair%%:*}" 2>/dev/null || missing+=("${pair#*:}")
   done
-  if [ ${#missing[@]} -gt 0 ]; then
-    say "installing ${missing[*]} from Debian"
-    sudo_cmd=""
-    [ "$(id -u)" = 0 ] || sudo_cmd="sudo"
-    $sudo_cmd apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-  fi
+  [ ${#missing[@]} -eq 0 ] || bash scripts/apt-install.sh "${missing[@]}"
+  # 6. The release packages and their proofs: cross targets, MinGW, musl, wine64, shellcheck, zig.
+  bash scripts/setup-release.sh >/dev/null
 fi
 say "ready"

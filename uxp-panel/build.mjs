@@ -8,8 +8,9 @@
 //      result with wasm-opt (scripts/wasm-opt.mjs, validating it as MVP) and inlines the bytes as base64 (CEP will not fetch() file:// URLs; inlining avoids Node.js in the panel),
 //   4. scans the .wasm for post-MVP features left and sets the manifest's minimum CEP/Illustrator to
 //      the oldest CEP whose Chromium can instantiate it (tools/wasm-features.mjs),
-//   5. assembles the installable extension folder dist/com.dformer.panel/ (panel + jsx bridge) and
-//      the standalone browser app dist/d-former-web/.
+//   5. assembles the installable extension folder dist/com.dformer.panel/ (panel + jsx bridge, the
+//      manifest's versions from the workspace Cargo.toml), the standalone browser app
+//      dist/d-former-web/ and the same app as one self-contained file, dist/d-former.html.
 // Usage: node uxp-panel/build.mjs [--dev] [--skip-wasm]
 import { execFileSync } from 'node:child_process';
 import { cpSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -17,6 +18,7 @@ import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { Reader, readSections } from './tools/wasm-binary.mjs';
 import { minimumCep, scanWasmFeatures } from './tools/wasm-features.mjs';
+import { singleHtml } from './tools/single-html.mjs';
 import { lowerToMvp } from './tools/wasm-lower-mvp.mjs';
 import { wasmOpt } from '../scripts/wasm-opt.mjs';
 
@@ -126,7 +128,12 @@ const bridge = join(repo, 'illustrator-scripts', 'dformer-bridge.jsx');
 if (!existsSync(bridge)) throw new Error(`missing ${bridge}: the panel cannot reach the document without it`);
 mkdirSync(join(ext, 'jsx'), { recursive: true });
 cpSync(bridge, join(ext, 'jsx', 'dformer-bridge.jsx'));
+// The one project version: [workspace.package] version in Cargo.toml (also `dformer --version`'s).
+const version = /\[workspace\.package\][^[]*?\nversion = "([^"]+)"/.exec(readFileSync(join(repo, 'Cargo.toml'), 'utf8'))?.[1];
+if (!version) throw new Error('no [workspace.package] version in Cargo.toml');
 const manifest = readFileSync(join(panel, 'CSXS', 'manifest.xml'), 'utf8')
+  .replace(/(ExtensionBundleVersion=")[^"]*/, `$1${version}`)
+  .replace(/(<Extension Id="[^"]+" Version=")[^"]*/, `$1${version}`)
   .replace(/(<Host Name="ILST" Version=")\[[\d.]+,/, `$1[${illustratorMin},`)
   .replace(/(<RequiredRuntime Name="CSXS" Version=")[\d.]+/, `$1${cep.cep}.0`);
 mkdirSync(join(ext, 'CSXS'), { recursive: true });
@@ -136,4 +143,6 @@ writeFileSync(
   `D-former CEP extension\nwasm: ${wasm.length} bytes; post-MVP WebAssembly features: ${featureList}\n` +
     `minimum: CEP ${cep.cep} (Chromium ${cep.chromium}); Illustrator ${cep.illustrator || 'release not documented by Adobe'}\n`
 );
-console.log(`[panel] extension folder: ${ext}\n[panel] browser app: ${join(web, 'index.html')}`);
+const single = join(dist, 'd-former.html');
+writeFileSync(single, singleHtml(web, version));
+console.log(`[panel] extension folder: ${ext} (version ${version})\n[panel] browser app: ${join(web, 'index.html')}, and as one file ${single}`);

@@ -140,6 +140,13 @@ pub fn path_to_svg(path: JsValue) -> Result<String, JsError> {
     api::svg::path_to_svg(&path).map_err(js_error)
 }
 
+/// The project's one version number, `[workspace.package] version` in the workspace Cargo.toml
+/// (the same as `dformer --version`); the panel shows it in its footer.
+#[wasm_bindgen]
+pub fn version() -> String {
+    env!("CARGO_PKG_VERSION").to_string()
+}
+
 /// The relative accuracy used when none is given.
 #[wasm_bindgen(js_name = DEFAULT_ACCURACY)]
 pub fn default_accuracy() -> f64 {

@@ -710,6 +710,7 @@
     syncControls();
     DF.core.load().then(function () {
       applyCoreDefaults();
+      $('#version').textContent = DF.core.version() ? 'D-former ' + DF.core.version() : '';
       return host.start({ selection: onSelection, theme: applyTheme });
     }).then(function () {
       // The browser app opens on the first sample, so there is something to look at right away.

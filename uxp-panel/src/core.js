@@ -126,6 +126,10 @@
     defaults: function () {
       return call('defaults', []);
     },
+    /** The core's version (the workspace Cargo.toml's), or '' from a build without it. */
+    version: function () {
+      return api && typeof api.version === 'function' ? api.version() : '';
+    },
     has: function (name) {
       return !!api && typeof api[name] === 'function';
     },
