@@ -81,7 +81,7 @@ export function datafile(sheet, { poisson = 0.3, kb = 1, title = '' } = {}) {
  * `schedule` (thick to thin) Newton steps (`hessian_seek`, `hessian_normal` off) until the
  * energy changes by less than `tol` relative (`coarse` in all stages but the last, which only
  * have to bring the next one near its equilibrium) or `steps` steps are taken; print one line
- * per stage and the final vertices.
+ * per stage, after the vertices it ends with.
  */
 export function script(schedule, { steps = 30, tol = 1e-9, coarse = 1e-5 } = {}) {
   const lines = [
@@ -95,9 +95,11 @@ export function script(schedule, { steps = 30, tol = 1e-9, coarse = 1e-5 } = {})
       'recalc',
       'olde := 1e300; it := 0',
       `while (abs(olde - total_energy) > ${num(stop)}*abs(total_energy) and it < ${steps}) do { olde := total_energy; hessian_seek; it := it + 1 }`,
+      // Vertices after every stage, so a run stopped by its time budget still has the last stage.
+      'foreach vertex vv do printf "V %d %.17g %.17g %.17g\\n", vv.id, vv.x, vv.y, vv.z',
       `printf "S %.17g %d %.17g %.17g %.17g\\n", bend.modulus, it, total_energy, stretch.value, bend.value`,
     );
   });
-  lines.push('foreach vertex vv do printf "V %d %.17g %.17g %.17g\\n", vv.id, vv.x, vv.y, vv.z', 'quit', '');
+  lines.push('quit', '');
   return lines.join('\n');
 }
