@@ -3,6 +3,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+# The Evolver peer (bench/evolver.bench.mjs) needs Debian's Surface Evolver.
+if ! command -v evolver >/dev/null; then
+  printf '\033[1mbench:\033[0m installing evolver-nox (Surface Evolver) from Debian\n'
+  sudo_cmd=""; [ "$(id -u)" = 0 ] || sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends evolver-nox >/dev/null
+fi
 bash scripts/build-wasm.sh
 for b in bench/*.bench.mjs; do
   printf '\n\033[1m== %s ==\033[0m\n' "$b"
