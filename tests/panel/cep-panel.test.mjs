@@ -254,6 +254,8 @@ test('test_issue_11_large_canvas_in_the_panel: perimeters show at their printed 
   }
   await page.click('#kind button[data-kind="stitch"]');
   await page.fill('#count', '8');
+  // Sizes follow the pitch unless typed (the core's defaults): type the 2 mm hole checked below.
+  await page.fill('#diameter', '2');
   await page.waitForFunction(() => /^8 connectors/.test(document.querySelector('#stats').textContent));
   await applyOk(page);
   const hole = items(host.snapshot()[0]).find((i) => i.name === 'hole 1');
