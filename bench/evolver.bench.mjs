@@ -8,7 +8,7 @@
 // Env: DFORMER_PKG (package path), DFORMER_EVOLVER_SEAM (seam vertices, default 128),
 //      DFORMER_EVOLVER_PAIRS (comma-separated pair numbers, default all),
 //      DFORMER_EVOLVER_BUDGET (seconds of Evolver per pair, default 600),
-//      DFORMER_EVOLVER_STEPS (Newton steps per continuation stage, default 25).
+//      DFORMER_EVOLVER_STEPS (Newton steps per continuation stage, default 80).
 import { createRequire } from 'node:module';
 import { pairs } from './evolver/pairs.mjs';
 import { glue } from './evolver/sheet.mjs';
@@ -37,7 +37,7 @@ const POISSON = 0.3;
 // radius, h the mesh step): bending of a curvature 1/R costs ~kb·h/R² per area against ~ε²
 // for a strain ε, so kb·h/R² is the square of the sheet's relative thickness up to a constant.
 const SCHEDULE = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7];
-const STEPS = Number(process.env.DFORMER_EVOLVER_STEPS ?? 25);
+const STEPS = Number(process.env.DFORMER_EVOLVER_STEPS ?? 80);
 // Wall-clock budget of one pair's Evolver run, seconds (the machine may be shared).
 const BUDGET = Number(process.env.DFORMER_EVOLVER_BUDGET ?? 600);
 
