@@ -18,6 +18,11 @@ fn from_js<T: DeserializeOwned>(value: JsValue, what: &str) -> Result<T, JsError
         .map_err(|e| js_error(Error::Shape { detail: format!("{what}: {e}") }))
 }
 
+/// Reads an optional `options` argument: `undefined` or `null` is every default.
+fn options_or_default<T: DeserializeOwned + Default>(options: JsValue) -> Result<T, JsError> {
+    if options.is_undefined() || options.is_null() { Ok(T::default()) } else { from_js(options, "options") }
+}
+
 /// Writes a DTO as plain JS objects and arrays.
 fn to_js<T: Serialize>(value: &T) -> Result<JsValue, JsError> {
     value
@@ -100,8 +105,7 @@ pub fn connect(pieces: JsValue, options: JsValue) -> Result<JsValue, JsError> {
         Some(p) => p,
         None => from_js(pieces, "pieces")?,
     };
-    let options: api::connect::ConnectOptionsDto =
-        if options.is_undefined() || options.is_null() { Default::default() } else { from_js(options, "options")? };
+    let options: api::connect::ConnectOptionsDto = options_or_default(options)?;
     let result = api::connect::connect(&pieces, &options).map_err(js_error)?;
     match api::connect::js::to_js(&result) {
         Some(v) => Ok(v),
@@ -113,8 +117,7 @@ pub fn connect(pieces: JsValue, options: JsValue) -> Result<JsValue, JsError> {
 #[wasm_bindgen]
 pub fn normalize(paths: JsValue, options: JsValue) -> Result<JsValue, JsError> {
     let paths: Vec<PathDto> = from_js(paths, "paths")?;
-    let options: api::normalize::NormalizeOptionsDto =
-        if options.is_undefined() || options.is_null() { Default::default() } else { from_js(options, "options")? };
+    let options: api::normalize::NormalizeOptionsDto = options_or_default(options)?;
     to_js(&api::normalize::normalize(&paths, &options).map_err(js_error)?)
 }
 
@@ -157,8 +160,7 @@ pub fn default_accuracy() -> f64 {
 #[wasm_bindgen]
 pub fn simulate(pieces: JsValue, options: JsValue) -> Result<JsValue, JsError> {
     let pieces: Vec<api::path::PathDto> = from_js(pieces, "pieces")?;
-    let options: api::simulate::SimulateOptionsDto =
-        if options.is_undefined() || options.is_null() { Default::default() } else { from_js(options, "options")? };
+    let options: api::simulate::SimulateOptionsDto = options_or_default(options)?;
     to_js(&api::simulate::simulate(&pieces, &options).map_err(js_error)?)
 }
 
@@ -167,8 +169,7 @@ pub fn simulate(pieces: JsValue, options: JsValue) -> Result<JsValue, JsError> {
 #[wasm_bindgen(js_name = formFigures)]
 pub fn form_figures(form: JsValue, options: JsValue) -> Result<JsValue, JsError> {
     let form: api::form::FormDto = from_js(form, "form")?;
-    let options: api::form::FiguresOptionsDto =
-        if options.is_undefined() || options.is_null() { Default::default() } else { from_js(options, "options")? };
+    let options: api::form::FiguresOptionsDto = options_or_default(options)?;
     to_js(&api::form::figures(&form, &options).map_err(js_error)?)
 }
 
