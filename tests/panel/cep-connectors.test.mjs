@@ -8,17 +8,10 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { usePanelBrowser, waitReady } from './support.mjs';
 import { openPanel } from './cep-stand-in.mjs';
-import { applyOk, items, lengthOf } from './cep-document.mjs';
+import { applyOk, items, lengthOf, TWO_SHAPES } from './cep-document.mjs';
 
 const panel = usePanelBrowser();
 
-const TWO = {
-  units: 'mm',
-  shapes: [
-    { name: 'Ellipse', ellipse: { top: 400, left: 0, width: 200, height: 110 } },
-    { name: 'Circle', ellipse: { top: 400, left: 260, width: 150, height: 150 } },
-  ],
-};
 const corner = (x, y) => ({ anchor: [x, y], left: [x, y], right: [x, y] });
 /** A U with a slot 20 pt (7.06 mm) wide, and a square: a 5 mm allowance closes the slot. */
 const U_AND_SQUARE = {
@@ -32,7 +25,7 @@ const ready = (page) => page.waitForFunction(() => document.body.dataset.state =
 const failed = (page) => page.waitForFunction(() => document.body.dataset.state === 'error');
 
 test('locking leaves: slots on the cut layer of both pieces, in the preview and in the document', async () => {
-  const { page, host } = await openPanel(panel.browser, panel.url, TWO);
+  const { page, host } = await openPanel(panel.browser, panel.url, TWO_SHAPES);
   await waitReady(page);
   await page.click('#kind button[data-kind="leaves"]');
   await page.selectOption('#leaf', 'lock');
@@ -47,7 +40,7 @@ test('locking leaves: slots on the cut layer of both pieces, in the preview and 
 });
 
 test('seam allowance: each cut line is 2π·a longer than its seam line, the seam line is scored, labels off writes none', async () => {
-  const { page, host } = await openPanel(panel.browser, panel.url, TWO);
+  const { page, host } = await openPanel(panel.browser, panel.url, TWO_SHAPES);
   await waitReady(page);
   await page.click('#kind button[data-kind="stitch"]');
   await page.fill('#count', '20');
@@ -75,7 +68,7 @@ test('seam allowance: each cut line is 2π·a longer than its seam line, the sea
 });
 
 test('one path, exact length: Normalize alone scales it in place about its first anchor', async () => {
-  const { page, host } = await openPanel(panel.browser, panel.url, { units: 'mm', shapes: [TWO.shapes[1]] });
+  const { page, host } = await openPanel(panel.browser, panel.url, { units: 'mm', shapes: [TWO_SHAPES.shapes[1]] });
   await waitReady(page);
   await page.selectOption('#norm-target', 'exact');
   await page.fill('#norm-exact', '300');
@@ -95,7 +88,7 @@ test('each new bad input: its message, Apply disabled, the document untouched', 
     ['allowance wider than a gap', async (page) => { await page.click('#kind button[data-kind="stitch"]'); await page.fill('#count', '20'); await page.fill('#allowance', '5'); }, /A seam allowance of 5\.00 mm makes the cut line of piece [AB] cross itself/, U_AND_SQUARE],
   ];
   for (const [what, act, message, doc] of cases) {
-    const { page, host } = await openPanel(panel.browser, panel.url, doc || TWO);
+    const { page, host } = await openPanel(panel.browser, panel.url, doc || TWO_SHAPES);
     await waitReady(page);
     const before = JSON.stringify(host.snapshot());
     await act(page);

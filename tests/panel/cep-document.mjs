@@ -25,3 +25,12 @@ export async function applyOk(page) {
 
 /** Length of a snapshot path item by the independent reference quadrature. */
 export const lengthOf = (it) => referenceLength({ closed: it.closed, points: it.points.map((p) => ({ anchor: p.a, left: p.l, right: p.r })) });
+
+/** The two pieces most panel tests start from: a 200 × 110 mm ellipse and a 150 mm circle. */
+export const TWO_SHAPES = {
+  units: 'mm',
+  shapes: [
+    { name: 'Ellipse', ellipse: { top: 400, left: 0, width: 200, height: 110 } },
+    { name: 'Circle', ellipse: { top: 400, left: 260, width: 150, height: 150 } },
+  ],
+};

@@ -4,19 +4,12 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { artifactPath, usePanelBrowser, waitReady } from './support.mjs';
 import { openPanel, SKINS } from './cep-stand-in.mjs';
-import { applyOk, items, lengthOf } from './cep-document.mjs';
+import { applyOk, items, lengthOf, TWO_SHAPES } from './cep-document.mjs';
 import { centroidOfAnchors, distance, inside, sample } from './geometry.mjs';
 
 const MM = 72 / 25.4;
 const panel = usePanelBrowser();
 
-const TWO_SHAPES = {
-  units: 'mm',
-  shapes: [
-    { name: 'Ellipse', ellipse: { top: 400, left: 0, width: 200, height: 110 } },
-    { name: 'Circle', ellipse: { top: 400, left: 260, width: 150, height: 150 } },
-  ],
-};
 
 test('select two shapes, normalize, add stitching, apply: equal perimeters and paired holes in the document', async () => {
   const { page, host, errors } = await openPanel(panel.browser, panel.url, TWO_SHAPES);
