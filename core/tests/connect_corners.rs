@@ -2,9 +2,10 @@
 //! at the sizes of the issue's report (a 41.6 × 40.1 mm square with a circle, 24 holes of 2 mm at
 //! 4 mm inset). Checked with geometry written here: distances to the polygon's sides in closed
 //! form, to the circle by its radius, label boxes (`size` high, `(0.6·chars + 0.2)·size` wide,
-//! the box hosts draw into) by the separating-axis test. Squares and rectangles must come out
-//! with no warning at all (a hole on every corner); on triangles (60° and 37° corners, too sharp
-//! for holes at these insets everywhere) whatever does not fit must be named in a warning.
+//! the box hosts draw into) by the separating-axis test. Stitch holes must come out with no
+//! warning at all: on squares and rectangles a hole on every corner, on triangles (60°, 37°, 21°
+//! and 17° corners) holes along the inset line clear of the tips. With locking leaves, whatever
+//! does not fit on a triangle must be named in a warning.
 
 mod common;
 use common::*;
@@ -146,7 +147,7 @@ fn holes_and_labels_keep_clear_of_corners_at_the_default_sizes() {
     for (name, pts) in shapes() {
         let (pieces, sh) = with_circle(&pts);
         let r = connect(&pieces, &ConnectOptionsDto { count: Some(24.0), ..Default::default() }).unwrap();
-        check(&format!("{name}, stitch defaults"), &r, &sh, !name.contains("triangle"));
+        check(&format!("{name}, stitch defaults"), &r, &sh, true);
     }
 }
 
@@ -156,7 +157,7 @@ fn test_issue_square_with_circle_24_holes_of_2mm_at_4mm_inset() {
     for (name, pts) in shapes() {
         let (pieces, sh) = with_circle(&pts);
         let r = connect(&pieces, &ConnectOptionsDto { count: Some(24.0), diameter: Some(2.0), inset: Some(4.0), ..Default::default() }).unwrap();
-        check(&format!("{name}, 2 mm holes at 4 mm"), &r, &sh, !name.contains("triangle"));
+        check(&format!("{name}, 2 mm holes at 4 mm"), &r, &sh, true);
     }
 }
 
@@ -168,5 +169,76 @@ fn locking_leaves_labels_keep_clear_of_slots_and_edges() {
         // Leaves change the outline: labels are checked against the leafy cut line.
         let sh = [Shape::Poly(flatten(&r.pieces[0].outline, 32)), Shape::Poly(flatten(&r.pieces[1].outline, 32))];
         check(&format!("{name}, locking leaves"), &r, &sh, !name.contains("triangle"));
+    }
+}
+
+/// The stitch options every host starts with, read from `defaults()` for a seam of `pitch`: the
+/// fixed values as they are, the derived sizes as their fraction of the pitch. `slide` is left
+/// unset, as hosts leave it ("left unset, connectors are shifted clear of the corners").
+fn default_stitch_options(pitch: f64) -> ConnectOptionsDto {
+    use dformer::api::defaults::serde_json_value::Value;
+    let d = dformer::api::defaults();
+    let of = |name: &str| d.options.iter().find(|o| o.name == name && o.kinds.iter().any(|k| k == "stitch")).unwrap_or_else(|| panic!("no default {name}"));
+    let number = |name: &str| match (&of(name).value, of(name).pitch) {
+        (Some(Value::Number(x)), _) => *x,
+        (None, Some(f)) => f * pitch,
+        other => panic!("{name}: {other:?}"),
+    };
+    let Some(Value::Text(kind)) = of("kind").value.clone() else { panic!("kind") };
+    ConnectOptionsDto {
+        kind: Some(kind),
+        count: Some(number("count")),
+        diameter: Some(number("diameter")),
+        inset: Some(number("inset")),
+        kerf: Some(number("kerf")),
+        ..Default::default()
+    }
+}
+
+/// Before: at the default sizes, triangles glued to circles had labels that fit nowhere (the
+/// equilateral one: numbers 17 and 24; the right one: holes 18, 19 and 20 overlapping at its
+/// 37° corner) and a thin one holes across the edge and outside the piece at its 21° tip. Each
+/// triangle is normalized against a circle (to their mean perimeter), connected with the options
+/// of `defaults()`, and checked here with no excuse: no warning at all, every hole wholly inside
+/// its piece and clear of every other hole, every label box inside its piece, off the cut line,
+/// off every hole and every other label, and nearest its own hole.
+#[test]
+fn triangles_glued_to_circles_get_no_warning_at_the_defaults() {
+    use dformer::api::normalize::{normalize, NormalizeOptionsDto};
+    use dformer::api::value::Value;
+    let tri_h = 50.0 * (3f64).sqrt() / 2.0;
+    let triangles: Vec<(&str, Vec<P>)> = vec![
+        ("equilateral triangle 50", vec![[0.0, 0.0], [50.0, 0.0], [25.0, tri_h]]),
+        ("right triangle 60 × 45", vec![[0.0, 0.0], [60.0, 0.0], [0.0, 45.0]]),
+        ("thin triangle 30 × 80 (21° tip)", vec![[0.0, 0.0], [30.0, 0.0], [15.0, 80.0]]),
+        ("thin right triangle 100 × 30 (17° corner)", vec![[0.0, 0.0], [100.0, 0.0], [0.0, 30.0]]),
+    ];
+    for (name, pts) in triangles {
+        let circle = moved(&ellipse([0.0, 0.0], 1.0, 1.0, 4, true), 30.0, [200.0, 0.0]);
+        let n = normalize(&[polygon(&pts), circle], &NormalizeOptionsDto { target: Some(Value::Text("mean".into())), ..Default::default() }).unwrap();
+        let (tri, circ) = (&n.paths[0], &n.paths[1]);
+        let shapes = [Shape::Poly(tri.points.iter().map(|p| p.anchor).collect()), Shape::Poly(flatten(circ, 400))];
+        let options = default_stitch_options(n.perimeter / 24.0);
+        assert_eq!(options.count, Some(24.0), "{name}: the default count");
+        let r = connect(&n.paths, &options).unwrap();
+        assert!(r.warnings.is_empty(), "{name}: {:?}", r.warnings);
+        check(name, &r, &shapes, true);
+        for (i, piece) in r.pieces.iter().enumerate() {
+            assert_eq!((piece.holes.len(), piece.labels.len()), (24, 24), "{name} piece {i}: one hole and one number per connector");
+            for (k, h) in piece.holes.iter().enumerate() {
+                for (m, g) in piece.holes.iter().enumerate().skip(k + 1) {
+                    let gap = (h.center[0] - g.center[0]).hypot(h.center[1] - g.center[1]);
+                    assert!(gap > 0.5 * (h.diameter + g.diameter), "{name} piece {i}: holes {} and {} overlap ({gap} apart)", k + 1, m + 1);
+                }
+            }
+            for (k, l) in piece.labels.iter().enumerate() {
+                assert_eq!(l.text, (k + 1).to_string());
+                let bx = label_box(l.at, l.angle, l.size, l.text.len());
+                assert!(!shapes[i].meets_box(&bx), "{name} piece {i}: label {} is not wholly inside the piece", k + 1);
+                let dist = |h: &dformer::api::connect::HoleDto| (h.center[0] - l.at[0]).hypot(h.center[1] - l.at[1]);
+                let nearest = (0..24).min_by(|&a, &b| dist(&piece.holes[a]).total_cmp(&dist(&piece.holes[b]))).unwrap();
+                assert_eq!(nearest, k, "{name} piece {i}: label {} is nearest hole {}", k + 1, nearest + 1);
+            }
+        }
     }
 }

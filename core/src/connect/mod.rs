@@ -23,6 +23,7 @@ pub mod leaves;
 pub mod options;
 pub mod phase;
 pub mod piece;
+pub mod sharp;
 pub mod spacing;
 pub mod stitch;
 pub mod teeth;
@@ -109,6 +110,7 @@ fn label_layout(set: &Settings) -> (f64, f64) {
 fn annotate(
     piece: &Walked,
     stations: &[Station],
+    centers: &[Point],
     set: &Settings,
     side: f64,
     obstacles: &labels::Obstacles,
@@ -119,17 +121,22 @@ fn annotate(
     let mut crowded = Vec::new();
     let mut scratch = Vec::new();
     for (k, st) in stations.iter().enumerate() {
-        // The mitre direction at a corner, at unit length: a corner's label goes as deep as its
-        // hole (which is `inset` from both sides, `|n|·inset` from the corner) plus the usual gap.
-        let n = piece.inward_at(st);
-        let m = n.hypot();
+        // Toward the connector's hole, when it has one (at a corner along the mitre, `|n|·inset`
+        // from the corner; beside a sharp corner on the inset line, [`sharp`]): the label goes
+        // as deep as its hole plus the usual gap. Else the mitre direction at unit length.
+        let (dir, hole) = match centers.get(k) {
+            Some(&c) if (c - st.point).hypot() > 0.0 => ((c - st.point).normalize(), Some((c - st.point).hypot())),
+            _ => {
+                let n = piece.inward_at(st);
+                (n / n.hypot() * side, None)
+            }
+        };
         let text = (k + 1).to_string();
-        let angle = circle::readable_angle(piece.along(n));
-        let hole = set.kind.has_holes().then_some(set.inset * m);
+        let angle = circle::readable_angle(piece.along(dir * side));
         let d = depth + hole.map_or(0.0, |h| h - set.inset);
         let before = hole.map(|h| h - 0.5 * set.diameter);
         let (at, h, clear) =
-            labels::place(st.point, n / m * side, angle, text.len(), d, size, before, hole.map(|_| k), &boxes, obstacles, &mut scratch);
+            labels::place(st.point, dir, angle, text.len(), d, size, before, hole.map(|_| k), &boxes, obstacles, &mut scratch);
         if !clear {
             crowded.push(text.clone());
         }
@@ -303,9 +310,10 @@ pub fn connect(a: &Contour, b: &Contour, raw: &RawOptions) -> Result<Connection>
         };
         let edge = warnings::Edge::new(edge_segs);
         let mut holes = Vec::new();
+        let mut centers = Vec::new();
         let label_side = if set.kind.has_holes() { stitch::side(&set) } else { 1.0 };
         if set.kind.has_holes() {
-            let centers = stitch::centers(w, &stations, &set);
+            centers = stitch::centers(w, &stations, &set);
             warnings.extend(warnings::holes(w.name(), &centers, 0.5 * set.diameter, &edge, !set.invert));
             holes = stitch::holes(&centers, &set, input_ccw);
         }
@@ -313,7 +321,7 @@ pub fn connect(a: &Contour, b: &Contour, raw: &RawOptions) -> Result<Connection>
         let discs: Vec<(Point, f64)> = holes.iter().map(|h| (h.center, 0.5 * h.diameter)).collect();
         let slot_boxes: Vec<labels::LabelBox> = slots.iter().map(|s| s.bounds()).collect();
         let obstacles = labels::Obstacles { holes: &discs, slots: &slot_boxes, edge: &edge, inside: label_side > 0.0 };
-        let (mut labels, marks, mut crowded) = annotate(w, &stations, &set, label_side, &obstacles);
+        let (mut labels, marks, mut crowded) = annotate(w, &stations, &centers, &set, label_side, &obstacles);
         if raw.labels == Some(false) {
             labels.clear();
             crowded.clear();

@@ -9,7 +9,9 @@
 //! `diameter` in the result is the drawn diameter.
 
 use super::circle::circle;
-use super::options::Settings;
+use super::options::{Kind, Settings};
+use super::sharp;
+use super::spacing::locate_many;
 use super::piece::Walked;
 use super::spacing::Station;
 use super::Hole;
@@ -20,10 +22,32 @@ pub fn side(set: &Settings) -> f64 {
     if set.invert { -1.0 } else { 1.0 }
 }
 
-/// Hole centres of one piece, in connector order.
+/// Hole centres of one piece, in connector order. Stitch holes inside the piece keep to the
+/// inset line at corners sharper than square ([`sharp`]).
 pub fn centers(piece: &Walked, stations: &[Station], set: &Settings) -> Vec<Point> {
     let depth = side(set) * set.inset;
-    stations.iter().map(|st| st.point + piece.inward_at(st) * depth).collect()
+    let mut out: Vec<Point> = stations.iter().map(|st| st.point + piece.inward_at(st) * depth).collect();
+    if set.kind != Kind::Stitch || set.invert {
+        return out;
+    }
+    let windows = sharp::windows(piece, set.inset, 0.5 * set.diameter);
+    if windows.is_empty() {
+        return out;
+    }
+    let per = piece.perimeter();
+    let moved: Vec<(usize, f64)> = stations
+        .iter()
+        .enumerate()
+        .filter_map(|(k, st)| {
+            let s = sharp::shifted(&windows, per, st.s);
+            (s != st.s).then_some((k, s))
+        })
+        .collect();
+    let at = locate_many(&piece.table, &moved.iter().map(|m| m.1).collect::<Vec<_>>());
+    for (&(k, _), st) in moved.iter().zip(&at) {
+        out[k] = st.point + piece.inward(st.tangent) * depth;
+    }
+    out
 }
 
 /// The drawn holes (see the module comment for kerf). Holes run against the drawing direction
