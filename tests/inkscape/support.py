@@ -159,5 +159,18 @@ def inside(segs, p, n=256):
     return result
 
 
+def distance(segs, p, n=64):
+    """Distance from ``p`` to the outline, over ``n`` chords per segment (exact for straight
+    segments, whose chords lie on them)."""
+    pts = [cubic_point(s, k / n) for s in segs for k in range(n)]
+    best = math.inf
+    for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1]):
+        dx, dy = x1 - x0, y1 - y0
+        l2 = dx * dx + dy * dy
+        t = 0.0 if l2 == 0 else max(0.0, min(1.0, ((p[0] - x0) * dx + (p[1] - y0) * dy) / l2))
+        best = min(best, math.hypot(p[0] - x0 - t * dx, p[1] - y0 - t * dy))
+    return best
+
+
 def rel(a, b):
     return abs(a - b) / max(abs(a), abs(b), 1e-300)
