@@ -39,31 +39,45 @@ class Connect(DformerEffect):
         add("--label_size", type=float, default=0.0, help="Number height (0: as large as fits clear of holes, slots and edge)")
 
     def core_options(self):
-        """The core's connect options, lengths converted to user units; 0 = the core's default."""
+        """The core's connect options; lengths as typed, in the user's unit (the core gets the
+        pieces in that unit too, ``in_unit``); 0 = the core's default."""
         o = self.options
-        opts = {"kind": o.kind, "invert": o.invert, "angle": o.angle, "leaf": o.leaf, "kerf": self.to_user(o.kerf)}
+        opts = {"kind": o.kind, "invert": o.invert, "angle": o.angle, "leaf": o.leaf, "kerf": o.kerf}
         # Slide and start both 0: the core places the connectors clear of the corners.
         if o.slide != 0 or o.start_a != 0 or o.start_b != 0:
             opts["slide"] = o.slide
-            opts["start"] = [self.to_user(o.start_a), self.to_user(o.start_b)]
+            opts["start"] = [o.start_a, o.start_b]
         if not o.labels:
             opts["labels"] = False
         if o.allowance != 0:
-            opts["allowance"] = self.to_user(o.allowance)
+            opts["allowance"] = o.allowance
         if o.spacing == "pitch":
-            opts["pitch"] = self.to_user(o.pitch)
+            opts["pitch"] = o.pitch
         else:
             opts["count"] = o.count
         for name in ("diameter", "inset", "length"):
             value = getattr(o, name)
             if value != 0:
-                opts[name] = self.to_user(value)
+                opts[name] = value
         return opts
 
     def compute(self):
         shapes = self.pieces()
-        pieces = read_pieces(shapes)
+        pieces = self.in_unit(read_pieces(shapes))
         result = call("connect", pieces=pieces, options=self.core_options())
+        back = self.from_unit
+        k = self.to_user(1.0)
+        for r in result["pieces"]:
+            r["outline"] = back(r["outline"])
+            for h in r["holes"]:
+                h["path"] = back(h["path"])
+            r["slots"] = [back(s) for s in r.get("slots", [])]
+            r["marks"] = [back(m) for m in r["marks"]]
+            if "seam" in r:
+                r["seam"] = back(r["seam"])
+            for label in r["labels"]:
+                label["at"] = [v * k for v in label["at"]]
+                label["size"] *= k
         # With a seam allowance the outline is the cut line and the seam line is scored.
         outlines_change = self.options.kind != "stitch" or any("seam" in r for r in result["pieces"])
         outline_d = path_data([r["outline"] for r in result["pieces"]], shapes) if outlines_change else None

@@ -7,6 +7,7 @@ checks — becomes ``inkex.AbortExtension``: Inkscape shows it as an error and, 
 writer never ran, the document is unchanged.
 """
 
+import math
 import re
 
 import inkex
@@ -61,8 +62,45 @@ class DformerEffect(inkex.EffectExtension):
         return value * self.px_per_user() / CONVERSIONS[self.unit()]
 
     def fmt(self, value):
-        """A length in user units written for a message, e.g. ``314.159 mm``."""
+        """A length in user units written for a report, e.g. ``314.1593 mm``."""
         return f"{self.from_user(value):.4f} {self.unit()}"
+
+    #: True while the core works in the user's unit (``in_unit``): the lengths in its messages
+    #: are then in that unit already.
+    core_in_unit = False
+
+    def in_unit(self, paths):
+        """Core paths in document user units -> the same paths in the user's unit (the display
+        unit unless ``--unit`` says otherwise). A core called with these, and with the lengths
+        the user typed as they are, speaks the user's unit in every message and warning, rounded
+        by its own rule (4 significant digits). ``from_unit`` maps its results back."""
+        self.core_in_unit = True
+        return [self._scaled(p, self.from_user(1.0)) for p in paths]
+
+    def from_unit(self, path):
+        """A core path in the user's unit -> document user units."""
+        return self._scaled(path, self.to_user(1.0))
+
+    @staticmethod
+    def _scaled(path, k):
+        if k == 1.0:
+            return path
+        return {
+            **path,
+            "points": [
+                {key: [v * k for v in pt[key]] for key in ("anchor", "left", "right") if pt.get(key) is not None}
+                for pt in path["points"]
+            ],
+        }
+
+    def message_len(self, value):
+        """A length from a core message in the user's unit, 4 significant digits (the core's
+        rule), e.g. ``55.64 mm``."""
+        v = float(f"{value if self.core_in_unit else self.from_user(value):.4g}")
+        text = f"{v:.{max(0, 3 - math.floor(math.log10(abs(v))))}f}" if v else "0"
+        if "." in text:
+            text = text.rstrip("0").rstrip(".")
+        return f"{text} {self.unit()}"
 
     # -- selection ---------------------------------------------------------------------------
 
@@ -90,7 +128,7 @@ class DformerEffect(inkex.EffectExtension):
 
     def user_message(self, message):
         """A core message for the student: pieces named by object, and the two perimeters of
-        a mismatch (the core gives raw user units) in the user's unit."""
+        a mismatch (raw numbers from the core) rounded, in the user's unit."""
         shapes = getattr(self, "shapes", [])
         # What to do, in Inkscape's menus (the core and this extension say it in plain words).
         message = name_pieces(advise(message), shapes)
@@ -99,7 +137,7 @@ class DformerEffect(inkex.EffectExtension):
             a, b = (float(v) for v in match.groups())
             names = [describe(e) for e in shapes[:2]] if len(shapes) >= 2 else ["", ""]
             return "different perimeters (" + " and ".join(
-                f"{name + ' ' if name else ''}{self.fmt(v)}" for name, v in zip(names, (a, b))
+                f"{name + ' ' if name else ''}{self.message_len(v)}" for name, v in zip(names, (a, b))
             ) + ";"
 
         try:

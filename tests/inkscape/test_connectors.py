@@ -90,6 +90,45 @@ class Connectors(unittest.TestCase):
             self.assertEqual(float(params[name].text), 0.0, f"{name} must default to the core's")
 
 
+class DisplayUnit(unittest.TestCase):
+    """connect_in.svg: one user unit is 0.02 in (viewBox 425 x 550 over 8.5 x 11 in) and the
+    display unit is the inch. Before, lengths in messages were user units ("Teeth of length 40
+    … a pitch of 50" for 0.8 in teeth at a 1 in pitch)."""
+
+    PITCH_IN = 12 / 12  # A: 200 x 100 user units = 12 in, 12 connectors
+    UU_PER_IN = 425 / 8.5
+
+    def test_messages_give_lengths_in_the_display_unit_rounded(self):
+        for args, wanted in [
+            (["--kind=teeth", "--length=0.8", "--angle=150"],
+             f"Teeth of length 0.8 with 150° flanks do not fit a pitch of {self.PITCH_IN:g}: the dovetails' corners collide"),
+            (["--kind=teeth", "--length=0.8", "--angle=10"], f"Teeth of length 0.8 with 10° flanks do not fit a pitch of {self.PITCH_IN:g}: the flanks meet"),
+            (["--diameter=1.2"], f"Holes of diameter 1.2 do not fit between connectors {self.PITCH_IN:g} apart"),
+        ]:
+            svg, err, out = run(Connect, "connect_in.svg", "--id=A", "--id=B", "--count=12", *args)
+            self.assertIsNone(svg, f"{args}: wanted a refusal")
+            self.assertEqual(out, b"", f"{args}: a refused effect must write no document")
+            self.assertIn(wanted, err, f"{args}: wanted {wanted!r} in {err!r}")
+        # 0.03 in across a slot 2 user units (0.04 in) wide: the allowances of its two sides meet.
+        svg, err, _ = run(Connect, "connect_in.svg", "--id=U", "--id=S", "--count=20", "--allowance=0.03")
+        self.assertIsNone(svg)
+        self.assertIn("A seam allowance of 0.03 makes the cut line of the first piece cross itself", err)
+
+    def test_lengths_typed_are_in_the_display_unit(self):
+        svg, err, _ = run(Connect, "connect_in.svg", "--id=A", "--id=B", "--count=12", "--diameter=0.1", "--inset=0.25")
+        self.assertIsNotNone(svg, err)
+        for eid in "AB":
+            boxes = [h.bounding_box() for h in svg.getElementById(f"dformer-cut-{eid}")]
+            self.assertEqual(len(boxes), 12)
+            for box in boxes:
+                self.assertLess(rel(box.width, 0.1 * self.UU_PER_IN), 1e-6, f"#{eid}: a 0.1 in hole is 5 user units wide, got {box.width}")
+        # The numbers come back at the core's sizes, in user units: a quarter of the pitch at most.
+        for label in svg.getElementById("dformer-engrave-B"):
+            size = float(label.style["font-size"])
+            self.assertLessEqual(size, 0.25 * self.PITCH_IN * self.UU_PER_IN * (1 + 1e-9))
+            self.assertGreater(size, 0.4 * 0.1 * self.UU_PER_IN * 0.999, "no smaller than 40 % of a hole diameter")
+
+
 class NormalizeOne(unittest.TestCase):
     def test_one_path_is_scaled_to_the_exact_length_about_its_first_node(self):
         before = segments(source("connect_mm.svg").getElementById("B"))[0][0]
