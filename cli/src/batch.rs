@@ -456,6 +456,8 @@ pub fn connect(
         kerf: len("kerf", &a.kerf)?,
         accuracy: None,
         labels: Some(!a.no_labels),
+        // Named after every length in the core's messages.
+        unit: Some(file.scale.unit.clone()),
     };
     let result = api::connect::connect(&paths, &options).map_err(|e| e.to_string())?;
     let hairline = laser::HAIRLINE_PX / file.scale.px_per_user;
@@ -620,13 +622,13 @@ mod tests {
         .unwrap_or_default();
         assert_eq!(
             err,
-            "Option `kerf`: 40 is not smaller than the hole diameter 30: the holes would vanish"
+            "Option `kerf`: 40 mm is not smaller than the hole diameter 30 mm: the holes would vanish"
         );
         let err = connect_in(px, Some("mm"), &["--count", "4", "--diameter", "60"])
             .err()
             .unwrap_or_default();
         assert!(
-            err.starts_with("Holes of diameter 60 do not fit between connectors 50."),
+            err.starts_with("Holes of diameter 60 mm do not fit between connectors 50.8 mm apart"),
             "wanted 60 mm holes 50.8 mm apart, got {err}"
         );
         // In a mm document a length typed in mm comes back as typed (was -1.0000000000000002).
@@ -634,7 +636,7 @@ mod tests {
             run_connect(&["--count", "8", "--inset", "-1mm"])
                 .err()
                 .unwrap_or_default(),
-            "Option `inset`: must be a positive number, got -1"
+            "Option `inset`: must be a positive number, got -1 mm"
         );
         // The layers are still drawn in the file's px: 4 connectors 50.8 mm = 192 px apart, and
         // 5 mm numbers are 18.9 px high.
@@ -663,7 +665,7 @@ mod tests {
         );
         assert!(
             err(&["--count", "8", "--inset", "-1mm"])
-                .starts_with("Option `inset`: must be a positive number, got -1"),
+                .starts_with("Option `inset`: must be a positive number, got -1 mm"),
             "got {}",
             err(&["--count", "8", "--inset", "-1mm"])
         );

@@ -135,10 +135,38 @@ pub fn significant(x: f64, digits: i32) -> f64 {
     if k >= 0 { (x * p).round() / p } else { (x / p).round() * p }
 }
 
+thread_local! {
+    /// The name of the caller's unit while a call that has one runs ([`unit_scope`]).
+    static UNIT: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
+}
+
+/// While the returned guard lives, [`len`] writes `name` after every length ("0.8 in"). A host
+/// that sends its geometry in the user's unit names it, so messages say which unit they speak.
+pub fn unit_scope(name: Option<&str>) -> UnitScope {
+    let previous = UNIT.with(|u| u.replace(name.map(str::to_string)));
+    UnitScope { previous }
+}
+
+/// Restores the unit of [`len`] when dropped.
+pub struct UnitScope {
+    previous: Option<String>,
+}
+
+impl Drop for UnitScope {
+    fn drop(&mut self) {
+        UNIT.with(|u| *u.borrow_mut() = self.previous.take());
+    }
+}
+
 /// A length as people read it in a message: four significant digits ("55.64", "0.1235", "1235"),
-/// in the caller's unit (the core has none; hosts convert before they call).
+/// in the caller's unit (the core has none; hosts convert before they call), followed by its
+/// name when the caller gave one ([`unit_scope`]).
 pub fn len(x: f64) -> String {
-    significant(x, 4).to_string()
+    let v = significant(x, 4).to_string();
+    UNIT.with(|u| match &*u.borrow() {
+        Some(name) => format!("{v} {name}"),
+        None => v,
+    })
 }
 
 /// An angle in degrees for a message, to 0.1° ("12.5").
@@ -148,13 +176,18 @@ pub fn deg(x: f64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{deg, len, two_significant};
+    use super::{deg, len, two_significant, unit_scope};
 
     #[test]
     fn message_numbers_are_rounded_for_people() {
         for (x, want) in [(55.636085526653936, "55.64"), (0.123456, "0.1235"), (1234.56, "1235"), (8.0, "8"), (-14.173228, "-14.17")] {
             assert_eq!(len(x), want, "len({x})");
         }
+        {
+            let _in = unit_scope(Some("in"));
+            assert_eq!(len(0.799999), "0.8 in");
+        }
+        assert_eq!(len(0.799999), "0.8", "the unit ends with its scope");
         assert_eq!(deg(10.04999), "10");
         assert_eq!(deg(107.46), "107.5");
     }

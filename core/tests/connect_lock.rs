@@ -89,6 +89,22 @@ fn test_dovetail_too_steep_for_the_pitch_names_the_angles_that_fit() {
     assert!(e.contains("Teeth of length 8 with 150° flanks do not fit a pitch of 10"), "got {e}");
 }
 
+/// A host that sends its pieces in the user's unit names it: every length in the message is
+/// followed by it, and a later call without a unit prints bare numbers again.
+#[test]
+fn lengths_in_messages_carry_the_unit_the_host_names() {
+    let steep = |unit: Option<&str>| {
+        let o = ConnectOptionsDto { kind: Some("teeth".into()), count: Some(26.0), length: Some(8.0), angle: Some(10.0), unit: unit.map(Into::into), ..Default::default() };
+        connect(&pair(), &o).unwrap_err().to_string()
+    };
+    let e = steep(Some("mm"));
+    assert!(e.contains("Teeth of length 8 mm with 10° flanks do not fit a pitch of 10 mm: the flanks meet"), "got {e}");
+    let e = steep(None);
+    assert!(e.contains("Teeth of length 8 with 10° flanks do not fit a pitch of 10: the flanks meet"), "got {e}");
+    let e = steep(Some("in; rm"));
+    assert!(e.contains("Option `unit`") && e.contains("1 to 8 letters"), "got {e}");
+}
+
 /// Locking leaves: A's leaf k (even k) stands into y < 0, which is B's face; B has a slot there
 /// whose centre is the leaf's shoulder (where the head widens out of the neck) and whose length
 /// along the edge is the neck's drawn width minus twice the kerf (both nominal after cutting).

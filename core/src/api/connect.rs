@@ -46,6 +46,10 @@ pub struct ConnectOptionsDto {
     /// `false` when the host draws no numbers: `labels` come back empty and unwarned.
     #[serde(default)]
     pub labels: Option<bool>,
+    /// The unit the pieces and lengths are in ("mm", "in", …: up to 8 letters), named after every
+    /// length in messages and warnings; absent: bare numbers.
+    #[serde(default)]
+    pub unit: Option<String>,
 }
 
 impl From<&ConnectOptionsDto> for RawOptions {
@@ -66,6 +70,7 @@ impl From<&ConnectOptionsDto> for RawOptions {
             kerf: o.kerf,
             accuracy: o.accuracy,
             labels: o.labels,
+            unit: o.unit.clone(),
         }
     }
 }

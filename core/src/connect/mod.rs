@@ -252,6 +252,8 @@ fn corner_positions(pieces: &[Walked; 2], raw: &RawOptions, set: &Settings) -> O
 
 /// Places paired connectors on two closed pieces `a` and `b` of equal perimeter.
 pub fn connect(a: &Contour, b: &Contour, raw: &RawOptions) -> Result<Connection> {
+    let unit = options::unit(raw)?;
+    let _unit = crate::error::unit_scope(unit);
     let accuracy = crate::api::accuracy_or_default(raw.accuracy)?;
     options::kind(raw)?;
     let pieces = [Walked::new(a, 0, true, accuracy)?, Walked::new(b, 1, false, accuracy)?];

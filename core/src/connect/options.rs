@@ -136,6 +136,9 @@ pub struct RawOptions {
     pub accuracy: Option<f64>,
     /// `false`: the host draws no numbers, so none are laid out or warned about.
     pub labels: Option<bool>,
+    /// The name of the unit the pieces and lengths are in, written after every length in
+    /// messages ("mm", "in"); none: bare numbers.
+    pub unit: Option<String>,
 }
 
 /// Checked options with every default filled in, for a seam of known perimeter.
@@ -173,6 +176,15 @@ fn positive(name: &'static str, v: Option<f64>, default: f64) -> Result<f64> {
         None => Ok(default),
         Some(x) if x.is_finite() && x > 0.0 => Ok(x),
         Some(x) => Err(bad(name, format!("must be a positive number, got {}", len(x)))),
+    }
+}
+
+/// The unit's name for messages: 1 to 8 letters (a `µ`, a `²` or a `.` allowed), or none.
+pub fn unit(raw: &RawOptions) -> Result<Option<&str>> {
+    match raw.unit.as_deref() {
+        None => Ok(None),
+        Some(u) if (1..=8).contains(&u.chars().count()) && u.chars().all(|c| c.is_alphabetic() || "µ².".contains(c)) => Ok(Some(u)),
+        Some(u) => Err(Error::Option { name: "unit", reason: format!("must be the name of a unit, 1 to 8 letters (\"mm\", \"in\"), got {u:?}") }),
     }
 }
 
