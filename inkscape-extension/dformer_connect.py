@@ -40,9 +40,10 @@ class Connect(DformerEffect):
 
     def core_options(self):
         """The core's connect options; lengths as typed, in the user's unit (the core gets the
-        pieces in that unit too, ``in_unit``); 0 = the core's default."""
+        pieces in that unit too, ``in_unit``, and names it after every length in its messages);
+        0 = the core's default."""
         o = self.options
-        opts = {"kind": o.kind, "invert": o.invert, "angle": o.angle, "leaf": o.leaf, "kerf": o.kerf}
+        opts = {"kind": o.kind, "invert": o.invert, "angle": o.angle, "leaf": o.leaf, "kerf": o.kerf, "unit": self.unit()}
         # Slide and start both 0: the core places the connectors clear of the corners.
         if o.slide != 0 or o.start_a != 0 or o.start_b != 0:
             opts["slide"] = o.slide

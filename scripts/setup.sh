@@ -45,14 +45,15 @@ if [ ! -d node_modules ] || [ package-lock.json -nt node_modules/.package-lock.j
 fi
 
 # 5. For the full test suite: Debian's Chromium (Playwright drives it), Inkscape 1.x with the
-#    Python modules its extensions import, and Xvfb (Inkscape registers extension actions only
-#    with a display).
+#    Python modules its extensions import, Xvfb (Inkscape registers extension actions only
+#    with a display) and xdotool (the refusal tests close Inkscape's message dialog).
 if [ "$want_all" = 1 ]; then
   missing=()
   command -v chromium >/dev/null || missing+=(chromium)
   command -v inkscape >/dev/null || missing+=(inkscape)
   command -v xvfb-run >/dev/null || missing+=(xvfb)
   command -v xauth >/dev/null || missing+=(xauth)
+  command -v xdotool >/dev/null || missing+=(xdotool)
   # The modules Inkscape's inkex imports on load (Debian only recommends them, so an Inkscape
   # installed without recommends lacks them).
   for pair in lxml:python3-lxml numpy:python3-numpy cssselect:python3-cssselect; do

@@ -7,8 +7,10 @@
 #   - test_properties.py  equal perimeters, paired holes at pitch and inset, errors, .inx checks;
 #   - test_export3d.py    the OBJ/STL written by 3D export against the reported volume and area;
 #   - test_cli.py         the JSON bridge and batch SVG commands, cross-checked with the extension;
-#   - test_inkscape_e2e.py the real Inkscape 1.2 running the installed extension (under xvfb-run).
-# Needs: inkscape, python3-lxml, python3-numpy (Inkscape's own dependencies), xvfb + xauth.
+#   - test_inkscape_e2e.py the real Inkscape 1.2 running the installed extension (under xvfb-run);
+#   - test_inkscape_refusals.py each bad input of issue 15 refused in the real Inkscape: its message
+#     as Inkscape received it, the exported document unchanged (own Xvfb; xdotool closes the dialog).
+# Needs: inkscape, python3-lxml, python3-numpy (Inkscape's own dependencies), xvfb + xauth, xdotool.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 DFORMER_BIN="$(cargo build -p dformer-cli --message-format=json-render-diagnostics \

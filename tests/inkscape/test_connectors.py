@@ -101,9 +101,9 @@ class DisplayUnit(unittest.TestCase):
     def test_messages_give_lengths_in_the_display_unit_rounded(self):
         for args, wanted in [
             (["--kind=teeth", "--length=0.8", "--angle=150"],
-             f"Teeth of length 0.8 with 150° flanks do not fit a pitch of {self.PITCH_IN:g}: the dovetails' corners collide"),
-            (["--kind=teeth", "--length=0.8", "--angle=10"], f"Teeth of length 0.8 with 10° flanks do not fit a pitch of {self.PITCH_IN:g}: the flanks meet"),
-            (["--diameter=1.2"], f"Holes of diameter 1.2 do not fit between connectors {self.PITCH_IN:g} apart"),
+             f"Teeth of length 0.8 in with 150° flanks do not fit a pitch of {self.PITCH_IN:g} in: the dovetails' corners collide"),
+            (["--kind=teeth", "--length=0.8", "--angle=10"], f"Teeth of length 0.8 in with 10° flanks do not fit a pitch of {self.PITCH_IN:g} in: the flanks meet"),
+            (["--diameter=1.2"], f"Holes of diameter 1.2 in do not fit between connectors {self.PITCH_IN:g} in apart"),
         ]:
             svg, err, out = run(Connect, "connect_in.svg", "--id=A", "--id=B", "--count=12", *args)
             self.assertIsNone(svg, f"{args}: wanted a refusal")
@@ -112,7 +112,7 @@ class DisplayUnit(unittest.TestCase):
         # 0.03 in across a slot 2 user units (0.04 in) wide: the allowances of its two sides meet.
         svg, err, _ = run(Connect, "connect_in.svg", "--id=U", "--id=S", "--count=20", "--allowance=0.03")
         self.assertIsNone(svg)
-        self.assertIn("A seam allowance of 0.03 makes the cut line of the first piece cross itself", err)
+        self.assertIn("A seam allowance of 0.03 in makes the cut line of the first piece cross itself", err)
 
     def test_lengths_typed_are_in_the_display_unit(self):
         svg, err, _ = run(Connect, "connect_in.svg", "--id=A", "--id=B", "--count=12", "--diameter=0.1", "--inset=0.25")

@@ -33,8 +33,9 @@ XVFB = shutil.which("xvfb-run")
 MISSING = None if INKSCAPE and (XVFB or os.environ.get("DISPLAY")) else "inkscape or xvfb-run is not installed"
 
 
-@unittest.skipIf(MISSING and not os.environ.get("DFORMER_REQUIRE_INKSCAPE"), MISSING or "")
-class InkscapeRunsTheExtension(unittest.TestCase):
+class InkscapeProfile(unittest.TestCase):
+    """A fresh Inkscape profile with the extension installed by install.sh (no tests here)."""
+
     @classmethod
     def setUpClass(cls):
         cls.home = tempfile.mkdtemp(prefix="dformer-inkscape-")
@@ -68,6 +69,9 @@ class InkscapeRunsTheExtension(unittest.TestCase):
         env["PATH"] = "/usr/bin:/bin:" + env.get("PATH", "")
         return env
 
+
+@unittest.skipIf(MISSING and not os.environ.get("DFORMER_REQUIRE_INKSCAPE"), MISSING or "")
+class InkscapeRunsTheExtension(InkscapeProfile):
     def inkscape(self, fixture, actions):
         """Runs Inkscape on a fixture with the actions, exporting to a new SVG; returns its root."""
         out = os.path.join(self.home, f"out-{len(os.listdir(self.home))}.svg")
