@@ -1,8 +1,9 @@
 // Issue 15 in the real panel with the real bridge in the simulated Illustrator DOM: locking leaves
 // write their slots on the cut layer, a seam allowance writes the cut line and scores the seam line,
 // labels can be switched off, one path normalizes to an exact length, and each new bad input (a
-// dovetail too steep for the pitch, an odd leaf count, an allowance that makes the cut line cross
-// itself) shows its message, disables Apply and leaves the document untouched.
+// dovetail angle too wide, a flank angle too steep for the pitch, an odd leaf count, an allowance
+// that makes the cut line cross itself) shows its message, disables Apply and leaves the document
+// untouched.
 // Requires `node uxp-panel/build.mjs`.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -83,7 +84,8 @@ test('one path, exact length: Normalize alone scales it in place about its first
 
 test('each new bad input: its message, Apply disabled, the document untouched', async () => {
   const cases = [
-    ['dovetail too steep', async (page) => { await page.click('#kind button[data-kind="teeth"]'); await page.fill('#count', '40'); await page.fill('#length', '20'); await page.fill('#angle', '160'); }, /dovetails' corners collide\. At this pitch the flank angle must be between [\d.]+° and [\d.]+°/],
+    ['dovetail angle too wide', async (page) => { await page.click('#kind button[data-kind="teeth"]'); await page.fill('#count', '40'); await page.fill('#length', '20'); await page.fill('#angle', '160'); }, /dovetails' corners collide\. At this pitch the flank angle must be between [\d.]+° and [\d.]+°/],
+    ['flank angle too steep for the pitch', async (page) => { await page.click('#kind button[data-kind="teeth"]'); await page.fill('#count', '40'); await page.fill('#length', '20'); await page.fill('#angle', '10'); }, /Teeth 20\.00 mm long with 10° flanks do not fit a pitch of [\d.]+ mm: the flanks meet\. At this pitch the flank angle must be between [\d.]+° and [\d.]+°/],
     ['odd leaf count', async (page) => { await page.click('#kind button[data-kind="leaves"]'); await page.fill('#count', '13'); }, /must be even, got 13: use 12 or 14/],
     ['allowance wider than a gap', async (page) => { await page.click('#kind button[data-kind="stitch"]'); await page.fill('#count', '20'); await page.fill('#allowance', '5'); }, /A seam allowance of 5\.00 mm makes the cut line of piece [AB] cross itself/, U_AND_SQUARE],
   ];
