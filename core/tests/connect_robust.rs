@@ -54,7 +54,7 @@ proptest! {
             (blob(10.0, 0.0), blob(10.0, 40.0))
         };
         let o = ConnectOptionsDto { kind, count, pitch, slide, start: Some([sa, sb]), inset, diameter, length, angle,
-                                    leaf, allowance, invert: Some(invert), kerf, accuracy: None, labels: None };
+                                    leaf, allowance, invert: Some(invert), kerf, accuracy: None, labels: None, unit: None };
         match connect(&[a, b], &o) {
             Ok(r) => {
                 for p in &r.pieces {
