@@ -4,8 +4,9 @@
 //! `(0.6·c + 0.2)·h` wide, centred on `at` and turned by `angle` (sans-serif digits are about
 //! 0.55 em wide; the box is what hosts draw into with `font-size = h`, text centred on `at`).
 //! Each label starts at its nominal depth and size ([`super::label_layout`]); when its box meets
-//! something already there, it is tried a little deeper into the piece and then smaller, down to
-//! 0.4 of the nominal size, and the first placement that is clear is kept. A label that fits
+//! something already there, it is tried a little deeper into the piece, between the edge and its
+//! hole, then farther along the edge (up to 2.4 text heights either way, which clears the narrow
+//! inside of a sharp corner), and then smaller, down to 0.4 of the nominal size, and the first placement that is clear is kept. A label that fits
 //! nowhere keeps the smallest size at its nominal depth and the caller warns.
 //!
 //! Tests: box against box is the separating-axis test (two rectangles are disjoint iff their
@@ -119,7 +120,9 @@ pub fn place(
         let tries = [(0.0, 0.0), (0.5, 0.0), (1.0, 0.0), (0.0, 0.6), (0.0, -0.6), (0.5, 0.6), (0.5, -0.6), (1.5, 0.0), (1.0, 1.0), (1.0, -1.0)]
             .map(|(extra, slide)| (depth + extra * h, slide));
         let inside = inner.map(|d| [(d, 0.0), (d, 0.6), (d, -0.6)]).unwrap_or_default();
-        for (d, slide) in tries.into_iter().chain(inside) {
+        // Farther along the edge: out of the narrow inside of a sharp corner.
+        let along_edge = [(0.5, 1.6), (0.5, -1.6), (1.0, 2.4), (1.0, -2.4)].map(|(extra, slide)| (depth + extra * h, slide));
+        for (d, slide) in tries.into_iter().chain(inside).chain(along_edge) {
             let at = base + dir * d + along * (slide * h);
             let b = LabelBox::new(at, angle, h, chars);
             // A label stays nearest its own hole, so the numbers still say which hole is which.
