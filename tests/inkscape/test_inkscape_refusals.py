@@ -7,7 +7,8 @@ that the exported document is the one Inkscape exports from the same fixture wit
 anything (so the refused run left the document as it was): the same canonical XML, once the
 zoom and window geometry that Inkscape's window writes into the named view are set aside. The allowance and
 one dovetail case run on connect_in.svg, a Letter page whose user unit is 0.02 in and whose
-display unit is the inch: their messages must give lengths in inches.
+display unit is the inch: their messages must give lengths in inches, and the lengths typed
+there (a successful run) are inches too.
 
 How the message is seen: Inkscape starts Python extensions with the interpreter of its
 preference `/extensions/python-interpreter`; here that is a two-line shell stand-in that runs
@@ -22,6 +23,7 @@ something is not installed; DFORMER_REQUIRE_INKSCAPE=1 (the test script sets it)
 failure instead.
 """
 
+import io
 import os
 import shutil
 import subprocess
@@ -195,6 +197,19 @@ class InkscapeRefusesBadInput(InkscapeProfile):
         # U's slot is 2 user units (0.04 in) wide: 0.03 in either side of it overlap.
         self.check_refused("connect_in.svg", ["U", "S"], {"count": "20", "allowance": "0.03"},
                            "A seam allowance of 0.03 in makes the cut line of the first piece cross itself")
+
+    def test_lengths_typed_in_the_display_unit_reach_the_document(self):
+        # connect_in.svg: 0.1 in holes are 5 user units across (0.02 in each), 0.25 in deep.
+        saved, message = self.export("connect_in.svg", ["A", "B"], {"count": "12", "diameter": "0.1", "inset": "0.25"})
+        self.assertEqual(message, "", "this run has nothing to warn about")
+        svg = inkex.load_svg(io.BytesIO(saved)).getroot()
+        for eid in "AB":
+            holes = svg.getElementById(f"dformer-cut-{eid}")
+            self.assertIsNotNone(holes, f"no holes for #{eid}: Inkscape did not run Connectors")
+            widths = [h.bounding_box().width for h in holes]
+            self.assertEqual(len(widths), 12)
+            for w in widths:
+                self.assertLess(abs(w - 5.0), 1e-6 * 5.0, f"#{eid}: a 0.1 in hole is 5 user units across, got {w}")
 
 
 if __name__ == "__main__":
