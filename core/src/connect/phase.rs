@@ -28,6 +28,12 @@ pub fn corners(piece: &Walked) -> Vec<f64> {
 
 /// Arc lengths of the anchors where the tangent turns by more than `min` and at most `max`.
 pub fn corners_turning(piece: &Walked, min: f64, max: f64) -> Vec<f64> {
+    corner_turns(piece, min).into_iter().filter(|c| c.1 <= max).map(|c| c.0).collect()
+}
+
+/// The anchors where the tangent turns by more than `min` (radians): arc length along the
+/// walk, the turn, and whether the corner is convex (turns with the walk).
+pub fn corner_turns(piece: &Walked, min: f64) -> Vec<(f64, f64, bool)> {
     let table = &piece.table;
     let n = table.segment_count();
     let live: Vec<usize> = (0..n).filter(|&i| control_polygon_len(table.segment(i)) > 0.0).collect();
@@ -36,8 +42,8 @@ pub fn corners_turning(piece: &Walked, min: f64, max: f64) -> Vec<f64> {
         let prev = live[(j + live.len() - 1) % live.len()];
         let (a, b) = (unit_tangent(table.segment(prev), 1.0), unit_tangent(table.segment(i), 0.0));
         let turn = a.dot(b).clamp(-1.0, 1.0).acos();
-        if turn > min && turn <= max {
-            out.push(table.segment_start(i));
+        if turn > min {
+            out.push((table.segment_start(i), turn, a.cross(b) * piece.turn > 0.0));
         }
     }
     out

@@ -25,7 +25,6 @@
 
 use super::phase::CORNER_TURN;
 use super::piece::Walked;
-use crate::arclen::{control_polygon_len, unit_tangent};
 
 /// How far the window reaches either side of a corner, in cuts.
 pub const REACH: f64 = 4.0;
@@ -53,19 +52,7 @@ pub struct Window {
 
 /// Corners of a piece: arc length, tangent turn (radians) and whether convex.
 fn corners(piece: &Walked) -> Vec<(f64, f64, bool)> {
-    let table = &piece.table;
-    let n = table.segment_count();
-    let live: Vec<usize> = (0..n).filter(|&i| control_polygon_len(table.segment(i)) > 0.0).collect();
-    let mut out = Vec::new();
-    for (j, &i) in live.iter().enumerate() {
-        let prev = live[(j + live.len() - 1) % live.len()];
-        let (a, b) = (unit_tangent(table.segment(prev), 1.0), unit_tangent(table.segment(i), 0.0));
-        let turn = a.dot(b).clamp(-1.0, 1.0).acos();
-        if turn > CORNER_TURN {
-            out.push((table.segment_start(i), turn, a.cross(b) * piece.turn > 0.0));
-        }
-    }
-    out
+    super::phase::corner_turns(piece, CORNER_TURN)
 }
 
 /// The windows of a piece's convex corners sharper than square, for holes of radius `radius`
