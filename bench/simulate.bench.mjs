@@ -93,7 +93,38 @@ const up = ([x, y]) => [x, -y];
 const pebble = { closed: true, points: pebbleSeg.map((s, i) => ({ anchor: up(s[0]), right: up(s[1]), left: up(pebbleSeg[(i + 4) % 5][2]) })) };
 const kidney = polar(72, (t) => 60 * (1 + 0.35 * Math.cos(2 * t) - 0.25 * Math.cos(t) + 0.2 * Math.sin(3 * t)));
 const lobes = polar(80, (t) => 55 * (1 + 0.12 * Math.sin(5 * t)));
-for (const [name, a] of [['Pebble + circle (the browser app sample)', pebble], ['kidney + circle', kidney], ['five-lobed + circle', lobes]]) {
+// A heart (its tip is a tight smooth turn) and a star with rounded tips, as in core/tests/simulate_common/shapes.rs.
+const heart = smooth(Array.from({ length: 64 }, (_, k) => {
+  const t = (2 * Math.PI * k) / 64;
+  return [3 * 16 * Math.sin(t) ** 3, 3 * (13 * Math.cos(t) - 5 * Math.cos(2 * t) - 2 * Math.cos(3 * t) - Math.cos(4 * t))];
+}).reverse());
+const star = polar(100, (t) => 50 * (1 + 0.28 * Math.cos(5 * t) ** 3));
+
+// The sampling floor: a seam edge is one mesh edge with two flat lengths, A's chord and B's chord
+// of the same arc (they differ by ~h³(κ_A² − κ_B²)/24), so no mesh on these seam samples can have
+// a smaller max edge strain than (c_A − c_B)/(c_A + c_B) on its worst seam edge, whatever the
+// solver. Read from the result's `flat` corners, independently of the solver's stats.
+function samplingFloor(r) {
+  const n = r.seam.length;
+  const len = new Map();
+  r.triangles.forEach((t, f) => {
+    for (let q = 0; q < 3; q++) {
+      const [i, j] = [t[q], t[(q + 1) % 3]];
+      const a = r.seam.indexOf(i), b = r.seam.indexOf(j);
+      if ((a - b + n) % n !== 1 && (b - a + n) % n !== 1) continue;
+      const key = `${Math.min(i, j)},${Math.max(i, j)}`;
+      const [p, w] = [r.flat[f][q], r.flat[f][(q + 1) % 3]];
+      const e = len.get(key) ?? [null, null];
+      e[r.piece[f]] = Math.hypot(p[0] - w[0], p[1] - w[1]);
+      len.set(key, e);
+    }
+  });
+  let worst = 0;
+  for (const [ca, cb] of len.values()) if (ca && cb) worst = Math.max(worst, Math.abs(ca - cb) / (ca + cb));
+  return worst;
+}
+
+for (const [name, a] of [['Pebble + circle (the browser app sample)', pebble], ['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart + circle', heart], ['rounded star + circle', star]]) {
   const pieces = [a, circleFor(a)];
   const t0 = performance.now();
   const r = m.simulate(pieces, { offset: 0, resolution: 256 });
@@ -101,4 +132,6 @@ for (const [name, a] of [['Pebble + circle (the browser app sample)', pebble], [
   const s = r.stats;
   console.log(`== ${name} (WASM, non-convex, 256 seam vertices) ==`);
   console.log(`  time ${ms.toFixed(1)} ms (≤ 1000 ms) ${mark(ms <= 1000)}   converged ${s.converged} ${mark(s.converged)}   max strain ${s.maxStrain.toExponential(2)} reflex ${s.reflexEdges} iterations ${s.iterations}`);
+  const floor = samplingFloor(r);
+  console.log(`  sampling floor: no mesh on these equal-arc seam samples gets below max edge strain ${floor.toExponential(2)} (≤ 1e-3 needed) ${mark(floor <= 1e-3)}${floor > 1e-3 ? ' — the samples, not the solver, rule out a converged answer' : ''}`);
 }
