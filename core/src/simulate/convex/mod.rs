@@ -216,7 +216,7 @@ pub(crate) fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(Seam
         levels.push(levels[levels.len() - 1] / 2);
     }
     levels.reverse();
-    let mut samples: Vec<SeamPieces> = levels.iter().map(|&m| glue.sample(m)).collect();
+    let mut samples: Vec<SeamPieces> = glue.sample_levels(&levels);
     let mut steps = (0usize, 0usize);
     let cap = options.max_iterations;
     let quick = Patience { cap: QUICK.cap.min(cap), ..QUICK };

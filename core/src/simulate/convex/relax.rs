@@ -2,7 +2,8 @@
 //! (Lawson-style, towards the convex realization; see the module docs of [`crate::simulate`]).
 
 use super::super::checks::{reflex_sine, REFLEX_SINE};
-use super::super::isometry::{bars, cost, max_strain, pattern, step, STRAIN_TOL};
+use super::super::isometry::{bars, cost, max_strain, pattern, repattern, step, Bar, STRAIN_TOL};
+use super::super::normal::NormalEquations;
 use super::super::mesh::make_outward;
 use super::super::metric::{self, Triangulation};
 use super::super::seam::SeamPieces;
@@ -118,6 +119,23 @@ pub(crate) fn shortest_flips(t: &mut Triangulation, pieces: &SeamPieces, p: usiz
 /// Steps after which [`relax`] folds reflex chords if the cost has not halved (see there).
 pub(crate) const PLATEAU: usize = 10;
 
+/// Flips after which the pattern's ordering is computed afresh rather than kept
+/// ([`super::super::normal::NormalEquations::reordered_like`]), per seam vertex: a few flips
+/// leave a good ordering good, but after the hundreds of flips of a warm start (a slider step of
+/// 1 % of the perimeter moves B's chords by a few samples each) the kept ordering's factor made
+/// the warm re-solve of the bench's crossed ellipses about three times slower.
+pub(crate) const REORDER_FLIPS: f64 = 1.0 / 16.0;
+
+/// The normal equations' pattern for `bars` after `since` flips: `ne`'s ordering kept while
+/// `since` stays under [`REORDER_FLIPS`] per vertex, else a fresh one (then `since` restarts).
+fn renew(ne: NormalEquations, since: usize, n: usize, bars: &[Bar]) -> (NormalEquations, usize) {
+    if (since as f64) <= REORDER_FLIPS * n as f64 {
+        (repattern(&ne, bars), since)
+    } else {
+        (pattern(n, bars), 0)
+    }
+}
+
 /// Result of relaxing one level.
 pub(crate) struct Relaxed {
     pub(crate) iterations: usize,
@@ -157,6 +175,8 @@ pub(crate) fn relax(
     let scale = size(x).max(f64::MIN_POSITIVE);
     let mut bars = bars(pieces, tri);
     let mut ne = pattern(n, &bars);
+    // Flips since `ne`'s ordering was computed (see [`renew`]).
+    let mut since = 0;
     let mut c = cost(x, &bars);
     let mut lambda = 1e-4;
     let mut iterations = 0;
@@ -174,7 +194,7 @@ pub(crate) fn relax(
                 if f > 0 {
                     flips += f;
                     bars = self::bars(pieces, tri);
-                    ne = pattern(n, &bars);
+                    (ne, since) = renew(ne, since + f, n, &bars);
                     c = cost(x, &bars);
                     lambda = 1e-4;
                     window = (iterations, c);
@@ -212,7 +232,7 @@ pub(crate) fn relax(
         flips += f;
         if f > 0 {
             bars = self::bars(pieces, tri);
-            ne = pattern(n, &bars);
+            (ne, since) = renew(ne, since + f, n, &bars);
             c = cost(x, &bars);
             lambda = 1e-4;
             continue;
