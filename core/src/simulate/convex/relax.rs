@@ -152,8 +152,36 @@ impl Relaxed {
     }
 }
 
+/// The Levenberg–Marquardt damping schedule of a [`relax`]: `λ` (relative to the mean diagonal of
+/// `JᵀJ`) at the start and after every flip pass, and the factor it shrinks by after an accepted
+/// step (it grows ×4 after a rejected one).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Damping {
+    pub(crate) start: f64,
+    pub(crate) shrink: f64,
+}
+
+/// The cold solve's damping: strong at first, shrinking by 3 (Marquardt's schedule). The starts
+/// of the multistart are far from any realization, and the flat doubly covered D-form (congruent
+/// pieces) is a singular point of the length equations, flat to first order in every
+/// out-of-plane flex: with λ starting at 1e-10 or shrinking by 10, Gauss–Newton's steps left it
+/// for a bent branch (two congruent 16-arc circles at a fifth of the perimeter ended at volume
+/// 8e-5 instead of 0), and the ladder's flip decisions, taken at its levels' loose 1e-6 stall,
+/// changed (a rectangle with a circle ended 5e-6 off in volume).
+pub(crate) const COLD: Damping = Damping { start: 1e-4, shrink: 3.0 };
+
+/// A warm start's damping: a previous result at a nearby offset is close to an isometric
+/// realization, where undamped Gauss–Newton converges quadratically (a zero-residual problem:
+/// Dennis & Schnabel, *Numerical Methods for Unconstrained Optimization and Nonlinear
+/// Equations*, 1983, ch. 10; λ only regularizes the six rigid motions here). With the
+/// cold schedule each flip pass restarted at λ = 1e-4 and took ~10 steps of linear convergence
+/// (the soft modes of nearly flat regions damped by λ): 62–82 steps for a slider step of 1 % on
+/// the bench's crossed ellipses, 21–33 with this one, to the same volumes (1e-9).
+pub(crate) const WARM: Damping = Damping { start: 1e-10, shrink: 10.0 };
+
 /// Levenberg–Marquardt on a fixed triangulation until the step is negligible, then one pass of
-/// flips; repeated until nothing flips. `step_tol` is relative to the shape's size.
+/// flips; repeated until nothing flips. `step_tol` is relative to the shape's size. With the
+/// cold [`Damping`] ([`relax_damped`] for another).
 pub(crate) fn relax(
     pieces: &SeamPieces,
     x: &mut Vec<V3>,
@@ -161,6 +189,19 @@ pub(crate) fn relax(
     budget: usize,
     step_tol: f64,
     orientation: Orientation,
+) -> Relaxed {
+    relax_damped(pieces, x, tri, budget, step_tol, orientation, COLD)
+}
+
+/// [`relax`] with the damping schedule `damping`.
+pub(crate) fn relax_damped(
+    pieces: &SeamPieces,
+    x: &mut Vec<V3>,
+    tri: &mut [Triangulation; 2],
+    budget: usize,
+    step_tol: f64,
+    orientation: Orientation,
+    damping: Damping,
 ) -> Relaxed {
     let n = pieces.n;
     let mut count = [HashMap::new(), HashMap::new()];
@@ -178,7 +219,7 @@ pub(crate) fn relax(
     // Flips since `ne`'s ordering was computed (see [`renew`]).
     let mut since = 0;
     let mut c = cost(x, &bars);
-    let mut lambda = 1e-4;
+    let mut lambda = damping.start;
     let mut iterations = 0;
     let mut converged = false;
     let mut window = (0usize, c);
@@ -196,7 +237,7 @@ pub(crate) fn relax(
                     bars = self::bars(pieces, tri);
                     (ne, since) = renew(ne, since + f, n, &bars);
                     c = cost(x, &bars);
-                    lambda = 1e-4;
+                    lambda = damping.start;
                     window = (iterations, c);
                 }
             }
@@ -216,7 +257,7 @@ pub(crate) fn relax(
         if ct <= c {
             *x = trial;
             c = ct;
-            lambda = (lambda / 3.0).max(1e-12);
+            lambda = (lambda / damping.shrink).max(1e-12);
         } else if !stalled {
             lambda *= 4.0;
             if lambda > 1e12 {
@@ -234,7 +275,7 @@ pub(crate) fn relax(
             bars = self::bars(pieces, tri);
             (ne, since) = renew(ne, since + f, n, &bars);
             c = cost(x, &bars);
-            lambda = 1e-4;
+            lambda = damping.start;
             continue;
         }
         let worst = max_strain(x, &bars);
