@@ -248,8 +248,8 @@ pub fn shared_chord(tri: &[Triangulation; 2]) -> bool {
     tri[1].chords().into_iter().any(|(i, j)| a.contains_key(&crate::order::pair_key(i, j)))
 }
 
-/// The chords of `t` keyed by [`crate::order::pair_key`] (`HashMap<u64, usize>`, the map type
+/// The chords of `t` keyed by [`crate::order::pair_key`] ([`metric::KeyMap`], the map type
 /// the triangulations use, so the .wasm holds one instantiation of the hash table).
-pub fn chord_keys(t: &Triangulation) -> std::collections::HashMap<u64, usize> {
+pub fn chord_keys(t: &Triangulation) -> metric::KeyMap {
     t.chords().into_iter().map(|(i, j)| (crate::order::pair_key(i, j), 0)).collect()
 }

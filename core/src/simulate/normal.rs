@@ -126,7 +126,7 @@ impl NormalEquations {
     /// The pattern for `n` vertices and the given pairs (`i != j`, each pair once): the
     /// ordering ([`vertex_order`]), the elimination tree and the factor's column counts.
     pub fn new(n: usize, pairs: &[(usize, usize)]) -> Self {
-        let adj = adjacency(n, pairs);
+        let adj = Adjacency::new(n, pairs);
         let order = vertex_order(&adj).unwrap_or_else(|| (0..n).collect());
         Self::with_order(n, pairs, &adj, order)
     }
@@ -136,16 +136,16 @@ impl NormalEquations {
     /// so the old ordering stays a good one (any ordering is exact; only fill depends on it), and
     /// AMD was ~10 % of a cold solve when every flip pass rebuilt the pattern from scratch.
     pub fn reordered_like(&self, pairs: &[(usize, usize)]) -> Self {
-        Self::with_order(self.n, pairs, &adjacency(self.n, pairs), self.order.clone())
+        Self::with_order(self.n, pairs, &Adjacency::new(self.n, pairs), self.order.clone())
     }
 
     /// [`NormalEquations::new`] in the natural order (the fallback when AMD refuses a graph).
     #[cfg(test)]
     fn natural(n: usize, pairs: &[(usize, usize)]) -> Self {
-        Self::with_order(n, pairs, &adjacency(n, pairs), (0..n).collect())
+        Self::with_order(n, pairs, &Adjacency::new(n, pairs), (0..n).collect())
     }
 
-    fn with_order(n: usize, pairs: &[(usize, usize)], adj: &[Vec<usize>], order: Vec<usize>) -> Self {
+    fn with_order(n: usize, pairs: &[(usize, usize)], adj: &Adjacency, order: Vec<usize>) -> Self {
         let mut pos = vec![0; n];
         for (k, &v) in order.iter().enumerate() {
             pos[v] = k;
@@ -157,8 +157,8 @@ impl NormalEquations {
         for &v in &order {
             let k = pos[v];
             let start = rows.len();
-            rows.extend(adj[v].iter().map(|&w| pos[w]).filter(|&i| i < k));
-            rows[start..].sort_unstable();
+            rows.extend(adj.row(v).iter().map(|&w| pos[w]).filter(|&i| i < k));
+            sort_short(&mut rows[start..]);
             colp.push(rows.len());
         }
         let slot = |i: usize, k: usize| colp[k] + rows[colp[k]..colp[k + 1]].binary_search(&i).expect("pair in pattern");
@@ -338,17 +338,71 @@ impl NormalEquations {
     }
 }
 
-/// Each vertex's sorted neighbours, itself included.
-fn adjacency(n: usize, pairs: &[(usize, usize)]) -> Vec<Vec<usize>> {
-    let mut adj: Vec<Vec<usize>> = (0..n).map(|v| vec![v]).collect();
-    for &(i, j) in pairs {
-        adj[i].push(j);
-        adj[j].push(i);
+/// Sorts a short slice in place (insertion sort): the rows here hold a vertex's few neighbours,
+/// and a std sort of `usize` would be one more instantiation in the .wasm (see [`crate::order`]).
+fn sort_short(v: &mut [usize]) {
+    for k in 1..v.len() {
+        let x = v[k];
+        let mut m = k;
+        while m > 0 && v[m - 1] > x {
+            v[m] = v[m - 1];
+            m -= 1;
+        }
+        v[m] = x;
     }
-    for a in &mut adj {
-        crate::order::sort_dedup(a);
+}
+
+/// The vertex graph in compressed rows: row `v` is `ai[ap[v]..ap[v + 1]]`, `v`'s sorted
+/// neighbours, itself included (a pair given twice, a chord in both pieces, counts once).
+struct Adjacency {
+    ap: Vec<usize>,
+    ai: Vec<usize>,
+}
+
+impl Adjacency {
+    fn new(n: usize, pairs: &[(usize, usize)]) -> Self {
+        let mut start = vec![0usize; n + 1];
+        for &(i, j) in pairs {
+            start[i + 1] += 1;
+            start[j + 1] += 1;
+        }
+        for v in 0..n {
+            start[v + 1] += start[v] + 1;
+        }
+        let mut fill: Vec<usize> = start[..n].to_vec();
+        let mut ai = vec![0usize; start[n]];
+        let mut put = |v: usize, w: usize, fill: &mut Vec<usize>| {
+            ai[fill[v]] = w;
+            fill[v] += 1;
+        };
+        for v in 0..n {
+            put(v, v, &mut fill);
+        }
+        for &(i, j) in pairs {
+            put(i, j, &mut fill);
+            put(j, i, &mut fill);
+        }
+        // Sort each row and drop repeats, compacting in place.
+        let mut ap = Vec::with_capacity(n + 1);
+        ap.push(0);
+        let mut out = 0;
+        for v in 0..n {
+            sort_short(&mut ai[start[v]..start[v + 1]]);
+            for k in start[v]..start[v + 1] {
+                if k == start[v] || ai[k] != ai[k - 1] {
+                    ai[out] = ai[k];
+                    out += 1;
+                }
+            }
+            ap.push(out);
+        }
+        ai.truncate(out);
+        Adjacency { ap, ai }
     }
-    adj
+
+    fn row(&self, v: usize) -> &[usize] {
+        &self.ai[self.ap[v]..self.ap[v + 1]]
+    }
 }
 
 /// A fill-reducing ordering of the vertices: approximate minimum degree (Amestoy, Davis & Duff,
@@ -357,20 +411,14 @@ fn adjacency(n: usize, pairs: &[(usize, usize)]) -> Vec<Vec<usize>> {
 /// chords of both pieces, two families of nearly parallel chords crossing at the offset's angle.
 /// On the D-forms of `bench/simulate.bench.mjs` (256 seam vertices) AMD's factor needed 10–30 %
 /// fewer nonzeros and multiplications than reverse Cuthill–McKee, and the factorization ran
-/// about twice as fast at the same iteration counts. `adj[v]`: `v`'s sorted neighbours, `v`
+/// about twice as fast at the same iteration counts. `adj`: each vertex's sorted neighbours, itself
 /// included; `order[k]` is the vertex eliminated `k`-th. `None` if AMD refuses the graph or
 /// returns anything but a permutation; AMD only refuses malformed input, which `adj` never is,
 /// so the natural order used then is a safety net, not a tuned path.
-fn vertex_order(adj: &[Vec<usize>]) -> Option<Vec<usize>> {
-    let n = adj.len();
-    let mut ap = Vec::with_capacity(n + 1);
-    let mut ai = Vec::new();
-    ap.push(0usize);
-    for nb in adj {
-        ai.extend_from_slice(nb);
-        ap.push(ai.len());
-    }
-    let (p, _, _) = amd::order(n, &ap, &ai, &amd::Control::default()).ok()?;
+fn vertex_order(adj: &Adjacency) -> Option<Vec<usize>> {
+    let n = adj.ap.len() - 1;
+    let (ap, ai) = (&adj.ap, &adj.ai);
+    let (p, _, _) = amd::order(n, ap, ai, &amd::Control::default()).ok()?;
     let mut seen = vec![false; n];
     if p.len() != n || !p.iter().all(|&v| v < n && !std::mem::replace(&mut seen[v], true)) {
         return None;
@@ -448,7 +496,7 @@ mod tests {
         check_against_dense(&mut NormalEquations::new(3, &chain), 3, &chain, "triangle, AMD");
         let strips = crossing_strips(24);
         let mut ne = NormalEquations::new(24, &strips);
-        assert!(vertex_order(&adjacency(24, &strips)).is_some(), "AMD gave no ordering for the crossing strips");
+        assert!(vertex_order(&Adjacency::new(24, &strips)).is_some(), "AMD gave no ordering for the crossing strips");
         check_against_dense(&mut ne, 24, &strips, "crossing strips, AMD");
         // The fallback ordering (the natural one), used if AMD ever refuses a graph.
         let mut ne = NormalEquations::natural(24, &strips);

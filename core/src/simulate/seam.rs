@@ -14,7 +14,7 @@ use crate::arclen::{unit_tangent, ArcTable};
 use crate::contour::Contour;
 use crate::error::{Error, Result};
 use crate::validate;
-use std::collections::HashMap;
+use super::metric::KeyMap;
 
 /// Relative accuracy of the arc lengths used to place seam samples: far below any visible or
 /// measurable effect (the seam gap target is 1e-4 of the perimeter) and cheap to invert.
@@ -208,12 +208,12 @@ impl Glue {
     }
 
     /// [`Glue::sample`] with the points already computed, per piece, keyed by the bits of their
-    /// seam arc length (`HashMap<u64, usize>`, the map type of the triangulations, so the .wasm
+    /// seam arc length ([`KeyMap`], the map type of the triangulations, so the .wasm
     /// holds one instantiation) into a list of points.
-    fn sample_cached(&self, n: usize, cache: &mut [(HashMap<u64, usize>, Vec<[f64; 2]>); 2]) -> SeamPieces {
+    fn sample_cached(&self, n: usize, cache: &mut [(KeyMap, Vec<[f64; 2]>); 2]) -> SeamPieces {
         let u = self.positions(n);
         let total = self.ta.total();
-        let sample = |t: &ArcTable, start: f64, mirror: f64, (index, points): &mut (HashMap<u64, usize>, Vec<[f64; 2]>)| -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+        let sample = |t: &ArcTable, start: f64, mirror: f64, (index, points): &mut (KeyMap, Vec<[f64; 2]>)| -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
             // B's own perimeter may differ from A's by up to the stitching tolerance.
             let k = t.total() / total;
             let mut at = |s: f64| {

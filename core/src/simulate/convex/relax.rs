@@ -5,10 +5,9 @@ use super::super::checks::{reflex_sine, REFLEX_SINE};
 use super::super::isometry::{bars, cost, max_strain, pattern, repattern, step, Bar, STRAIN_TOL};
 use super::super::normal::NormalEquations;
 use super::super::mesh::make_outward;
-use super::super::metric::{self, Triangulation};
+use super::super::metric::{self, KeyMap, Triangulation};
 use super::super::seam::SeamPieces;
 use super::super::vec3::{size, V3};
-use std::collections::HashMap;
 
 /// How often a chord may be flipped away before it is frozen: a chord that keeps coming back
 /// sits between two nearly coplanar triangles (or a non-convex piece), where flipping it again
@@ -37,9 +36,9 @@ pub(crate) fn flip_pass(
     x: &mut [V3],
     tri: &mut [Triangulation; 2],
     pieces: &SeamPieces,
-    // Keyed by `order::pair_key(i, j)`: `HashMap<u64, usize>` is the map type the triangulations
-    // use too, so the .wasm holds one instantiation of the hash table, not two.
-    count: &mut [HashMap<u64, usize>; 2],
+    // Keyed by `order::pair_key(i, j)`: [`KeyMap`] is the map type the triangulations use too,
+    // so the .wasm holds one instantiation of the hash table, not two.
+    count: &mut [KeyMap; 2],
     orientation: Orientation,
 ) -> usize {
     if orientation == Orientation::Free {
@@ -204,7 +203,7 @@ pub(crate) fn relax_damped(
     damping: Damping,
 ) -> Relaxed {
     let n = pieces.n;
-    let mut count = [HashMap::new(), HashMap::new()];
+    let mut count = [KeyMap::default(), KeyMap::default()];
     let mut flips = 0;
     for _ in 0..n {
         let f = flip_pass(x, tri, pieces, &mut count, orientation);
