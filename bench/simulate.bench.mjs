@@ -68,7 +68,7 @@ function run(name, pieces, offset) {
   console.log(`  interior |defect| ${(Math.abs(s.interiorDefectSum) / (4 * Math.PI)).toExponential(3)} of 4π (≤ 5e-3) ${mark(Math.abs(s.interiorDefectSum) <= 5e-3 * 4 * Math.PI)}`);
   console.log(`  volume change 128→256 ${dres.toExponential(3)} (≤ 5e-3) ${mark(dres <= 5e-3)}`);
   console.log(`  time ${ms.toFixed(1)} ms median of ${reps} (min ${times[0].toFixed(1)}) (≤ 300 ms) ${mark(ms <= 300)}  converged ${s.converged} iterations ${s.iterations}`);
-  console.log(`  slider drag, 10 steps of 1 % of the perimeter: warm re-solve ${warmMs.toFixed(1)} ms median vs cold ${coldMs.toFixed(1)} ms at the same offsets (${(warmMs / coldMs).toFixed(2)}×), volume vs cold ≤ ${drag.dv.toExponential(1)}, all converged ${drag.converged}`);
+  console.log(`  slider drag, 10 steps of 1 % of the perimeter: warm re-solve ${warmMs.toFixed(1)} ms median vs cold ${coldMs.toFixed(1)} ms at the same offsets (${(warmMs / coldMs).toFixed(2)}×, ≤ 1 as issue 14 asks) ${mark(warmMs <= coldMs)}, volume vs cold ≤ ${drag.dv.toExponential(1)}, all converged ${drag.converged}`);
 }
 run('two ellipses 2:1, quarter-perimeter offset', [e, e], P / 4);
 run('ellipse 2:1 with a circle', [e, circle], 0);

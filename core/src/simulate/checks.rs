@@ -196,8 +196,10 @@ fn segment_crosses(p: V3, q: V3, a: V3, b: V3, c: V3, eps: f64, flat: f64) -> bo
 
 /// Whether two triangles of the closed mesh cross each other away from what they share: a side
 /// of one (not touching a shared vertex) through the inside of the other. Triangles sharing a
-/// side meet only along it unless folded, which [`max_bend`] sees. Bounding boxes first, so
-/// `O(F²)` box tests and a few segment tests.
+/// side meet only along it unless folded, which [`max_bend`] sees. Bounding boxes first, swept
+/// along x (sort and sweep: the boxes sorted by their low x, each compared only with the later
+/// ones that start before it ends), so the pairs tested are those whose boxes overlap, as
+/// before, without the `F²/2` box tests (130,000 at 256 seam vertices) of every pair.
 pub fn self_intersecting(x: &[V3], tri: &[Triangulation; 2]) -> bool {
     let flat = 1e-6 * centroid_and_radius(x).1;
     let faces: Vec<[usize; 3]> = tri.iter().flat_map(|t| t.tris.iter().copied()).collect();
@@ -210,9 +212,13 @@ pub fn self_intersecting(x: &[V3], tri: &[Triangulation; 2]) -> bool {
         })
         .collect();
     const EPS: f64 = 1e-9;
-    for i in 0..faces.len() {
-        for j in i + 1..faces.len() {
+    let by_x = crate::order::argsort(&boxes.iter().map(|b| b.0[0]).collect::<Vec<_>>());
+    for (r, &i) in by_x.iter().enumerate() {
+        for &j in &by_x[r + 1..] {
             let (bi, bj) = (boxes[i], boxes[j]);
+            if bj.0[0] > bi.1[0] {
+                break;
+            }
             if (0..3).any(|a| bi.1[a] < bj.0[a] || bj.1[a] < bi.0[a]) {
                 continue;
             }
@@ -242,8 +248,8 @@ pub fn shared_chord(tri: &[Triangulation; 2]) -> bool {
     tri[1].chords().into_iter().any(|(i, j)| a.contains_key(&crate::order::pair_key(i, j)))
 }
 
-/// The chords of `t` keyed by [`crate::order::pair_key`] (`HashMap<u64, usize>`, the map type
+/// The chords of `t` keyed by [`crate::order::pair_key`] ([`metric::KeyMap`], the map type
 /// the triangulations use, so the .wasm holds one instantiation of the hash table).
-pub fn chord_keys(t: &Triangulation) -> std::collections::HashMap<u64, usize> {
+pub fn chord_keys(t: &Triangulation) -> metric::KeyMap {
     t.chords().into_iter().map(|(i, j)| (crate::order::pair_key(i, j), 0)).collect()
 }

@@ -76,3 +76,10 @@ pub(crate) fn pattern(n: usize, bars: &[Bar]) -> NormalEquations {
     let pairs: Vec<(usize, usize)> = bars.iter().map(|b| (b.i, b.j)).collect();
     NormalEquations::new(n, &pairs)
 }
+
+/// The pattern of `bars` after flips, in the ordering of the previous pattern `ne`
+/// ([`NormalEquations::reordered_like`]).
+pub(crate) fn repattern(ne: &NormalEquations, bars: &[Bar]) -> NormalEquations {
+    let pairs: Vec<(usize, usize)> = bars.iter().map(|b| (b.i, b.j)).collect();
+    ne.reordered_like(&pairs)
+}

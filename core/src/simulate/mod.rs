@@ -28,7 +28,7 @@
 //! *Solver.* Levenberg–Marquardt on the relative edge residuals `|X_i − X_j| / d_ij − 1`
 //! (Gauss–Newton with Levenberg damping `λ·I`, which also absorbs the six rigid motions and the
 //! out-of-plane flexes of a flat configuration). Each step solves `(JᵀJ + λI) Δ = −Jᵀr`, a sparse
-//! SPD system with the planar graph's sparsity, with sprs-ldl's sparse LDLᵀ (approximate-minimum-degree
+//! SPD system with the planar graph's sparsity, with a sparse LDLᵀ on 3×3 blocks (approximate-minimum-degree
 //! ordering; the symbolic factorization is kept until a flip changes the pattern, see [`normal`]).
 //! Between steps every interior edge whose dihedral is reflex is *flipped* (Lawson-style) to the
 //! other diagonal of its flat quad, which is always legal in a convex piece; the flips drive the

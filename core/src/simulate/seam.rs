@@ -14,6 +14,7 @@ use crate::arclen::{unit_tangent, ArcTable};
 use crate::contour::Contour;
 use crate::error::{Error, Result};
 use crate::validate;
+use super::metric::KeyMap;
 
 /// Relative accuracy of the arc lengths used to place seam samples: far below any visible or
 /// measurable effect (the seam gap target is 1e-4 of the perimeter) and cheap to invert.
@@ -192,21 +193,44 @@ impl Glue {
 
     /// Both pieces sampled at `n` seam vertices ([`Glue::positions`]).
     pub fn sample(&self, n: usize) -> SeamPieces {
+        self.sample_cached(n, &mut Default::default())
+    }
+
+    /// [`Glue::sample`] at each of `ns`, the same values, with every seam point that two levels
+    /// share computed once. The levels of the coarse-to-fine ladder nest ([`Glue::positions`]):
+    /// a level's samples are every other sample of the next, and its arc midpoints that level's
+    /// odd samples, the same arc lengths bit for bit. Inverting the arc length is the costly part
+    /// (kurbo's `inv_arclen`; the four levels 32…256 were 13 % of a cold solve), and the ladder
+    /// then needs the finest level's points only.
+    pub fn sample_levels(&self, ns: &[usize]) -> Vec<SeamPieces> {
+        let mut cache = Default::default();
+        ns.iter().map(|&n| self.sample_cached(n, &mut cache)).collect()
+    }
+
+    /// [`Glue::sample`] with the points already computed, per piece, keyed by the bits of their
+    /// seam arc length ([`KeyMap`], the map type of the triangulations, so the .wasm
+    /// holds one instantiation) into a list of points.
+    fn sample_cached(&self, n: usize, cache: &mut [(KeyMap, Vec<[f64; 2]>); 2]) -> SeamPieces {
         let u = self.positions(n);
         let total = self.ta.total();
-        let sample = |t: &ArcTable, start: f64, mirror: f64| -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+        let sample = |t: &ArcTable, start: f64, mirror: f64, (index, points): &mut (KeyMap, Vec<[f64; 2]>)| -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
             // B's own perimeter may differ from A's by up to the stitching tolerance.
             let k = t.total() / total;
-            let at = |s: f64| {
-                let p = t.point_at(start + k * s);
-                [mirror * p.x, p.y]
+            let mut at = |s: f64| {
+                let m = *index.entry(s.to_bits()).or_insert_with(|| {
+                    let p = t.point_at(start + k * s);
+                    points.push([mirror * p.x, p.y]);
+                    points.len() - 1
+                });
+                points[m]
             };
             let pts = u.iter().map(|&s| at(s)).collect();
             let mid = (0..n).map(|i| at(0.5 * (u[i] + if i + 1 < n { u[i + 1] } else { total }))).collect();
             (pts, mid)
         };
-        let (pts_a, mid_a) = sample(&self.ta, 0.0, 1.0);
-        let (pts_b, mid_b) = sample(&self.tb, self.offset, -1.0);
+        let [ca, cb] = cache;
+        let (pts_a, mid_a) = sample(&self.ta, 0.0, 1.0, ca);
+        let (pts_b, mid_b) = sample(&self.tb, self.offset, -1.0, cb);
         SeamPieces {
             n,
             flat: [

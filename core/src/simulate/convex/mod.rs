@@ -21,7 +21,7 @@ use super::seam::{Glue, SeamPieces};
 use super::vec3::V3;
 use crate::error::{Error, Result};
 use polyhedral::{cone_restart, solve_polyhedral, CONE_BUDGET};
-use relax::{relax, shortest_flips, Orientation};
+use relax::{relax, relax_damped, shortest_flips, Orientation, WARM};
 use starts::{initial_guess, resample, upsample, LIFTS};
 
 /// Finds the seam positions at `options.resolution` seam vertices, from the warm start or cold
@@ -30,10 +30,17 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
     let Some(w) = &options.warm else { return solve_cold(glue, options) };
     // A warm start: a previous result's vertices, already outward (never mirrored).
     let pieces = glue.sample(options.resolution);
-    // Plain ear clipping, not [`triangulate`]: the warm positions decide the flips.
-    let mut tri = [ear_clip(&pieces, 0)?, ear_clip(&pieces, 1)?];
     let mut x = resample(w, pieces.n);
-    let r = relax(&pieces, &mut x, &mut tri, options.max_iterations.min(WARM_BUDGET).max(1), STEP_TOL, Orientation::Kept);
+    // The triangulations read off the convex hull of the warm positions ([`hull::triangulations`]):
+    // a previous convex result is the hull of its vertices, so its own chords come back and only
+    // the few that the new offset turns reflex are flipped. Else plain ear clipping, not
+    // [`triangulate`]: the warm positions decide the flips.
+    let mut tri = match hull::triangulations(&x, &pieces) {
+        Some(t) => t,
+        None => [ear_clip(&pieces, 0)?, ear_clip(&pieces, 1)?],
+    };
+    let budget = options.max_iterations.min(WARM_BUDGET).max(1);
+    let r = relax_damped(&pieces, &mut x, &mut tri, budget, STEP_TOL, Orientation::Kept, WARM);
     if is_good(&x, &tri, r.converged) && exact_if_polyhedral(&pieces, &x, &tri) && convex_as_a_whole(&x, &tri) {
         let solution = Solution { x, tri, iterations: r.iterations, flips: r.flips, converged: true };
         return Ok((pieces, solution));
@@ -79,11 +86,15 @@ pub(crate) const QUICK: Patience = Patience { attempt: 60, level: 150, cap: 1000
 /// 256 seam vertices) — longer than the quick budgets allow, but the branch is right.
 pub(crate) const PATIENT: Patience = Patience { attempt: 2000, level: 2000, cap: usize::MAX, hull: true };
 
-/// Steps allowed to a warm start before it is dropped for a cold solve. A slider step of 1 % of
-/// the perimeter takes 25–105 steps from the previous result (two 2:1 ellipses, an ellipse with
-/// a circle); a warm start that needs more is heading for a shape the solver cannot realize, and
-/// grinding it longer only delays the cold solve the slider then waits for.
-pub(crate) const WARM_BUDGET: usize = 300;
+/// Steps allowed to a warm start before it is dropped for a cold solve. From the hull of the
+/// previous result ([`hull::triangulations`]) with the warm damping ([`relax::WARM`]) a slider
+/// step of 1 % of the perimeter takes 5–33 steps at 256 seam vertices (the bench's crossed 2:1
+/// ellipses 21–33, an ellipse with a circle 5–9); a warm start that needs more is heading for a
+/// shape the solver cannot realize, and grinding it longer only delays the cold solve the slider
+/// then waits for. 50 steps at the finest level cost about half the crossed ellipses' cold
+/// solve (130 steps, most of them on the coarser levels), so a warm start that fails costs the
+/// slider that much on top of the cold solve, and one that succeeds saves the rest. (It was 300 when a step took 25–105 steps from an ear clipping.)
+pub(crate) const WARM_BUDGET: usize = 50;
 
 /// Strain below which a coarser level (relaxed only to a step of 1e-6 of the size) counts as
 /// solved: its solution is only a start for the next level, which polishes it.
@@ -216,7 +227,7 @@ pub(crate) fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(Seam
         levels.push(levels[levels.len() - 1] / 2);
     }
     levels.reverse();
-    let mut samples: Vec<SeamPieces> = levels.iter().map(|&m| glue.sample(m)).collect();
+    let mut samples: Vec<SeamPieces> = glue.sample_levels(&levels);
     let mut steps = (0usize, 0usize);
     let cap = options.max_iterations;
     let quick = Patience { cap: QUICK.cap.min(cap), ..QUICK };

@@ -2,12 +2,12 @@
 //! (Lawson-style, towards the convex realization; see the module docs of [`crate::simulate`]).
 
 use super::super::checks::{reflex_sine, REFLEX_SINE};
-use super::super::isometry::{bars, cost, max_strain, pattern, step, STRAIN_TOL};
+use super::super::isometry::{bars, cost, max_strain, pattern, repattern, step, Bar, STRAIN_TOL};
+use super::super::normal::NormalEquations;
 use super::super::mesh::make_outward;
-use super::super::metric::{self, Triangulation};
+use super::super::metric::{self, KeyMap, Triangulation};
 use super::super::seam::SeamPieces;
 use super::super::vec3::{size, V3};
-use std::collections::HashMap;
 
 /// How often a chord may be flipped away before it is frozen: a chord that keeps coming back
 /// sits between two nearly coplanar triangles (or a non-convex piece), where flipping it again
@@ -36,9 +36,9 @@ pub(crate) fn flip_pass(
     x: &mut [V3],
     tri: &mut [Triangulation; 2],
     pieces: &SeamPieces,
-    // Keyed by `order::pair_key(i, j)`: `HashMap<u64, usize>` is the map type the triangulations
-    // use too, so the .wasm holds one instantiation of the hash table, not two.
-    count: &mut [HashMap<u64, usize>; 2],
+    // Keyed by `order::pair_key(i, j)`: [`KeyMap`] is the map type the triangulations use too,
+    // so the .wasm holds one instantiation of the hash table, not two.
+    count: &mut [KeyMap; 2],
     orientation: Orientation,
 ) -> usize {
     if orientation == Orientation::Free {
@@ -118,6 +118,23 @@ pub(crate) fn shortest_flips(t: &mut Triangulation, pieces: &SeamPieces, p: usiz
 /// Steps after which [`relax`] folds reflex chords if the cost has not halved (see there).
 pub(crate) const PLATEAU: usize = 10;
 
+/// Flips after which the pattern's ordering is computed afresh rather than kept
+/// ([`super::super::normal::NormalEquations::reordered_like`]), per seam vertex: a few flips
+/// leave a good ordering good, but after the hundreds of flips of a warm start (a slider step of
+/// 1 % of the perimeter moves B's chords by a few samples each) the kept ordering's factor made
+/// the warm re-solve of the bench's crossed ellipses about three times slower.
+pub(crate) const REORDER_FLIPS: f64 = 1.0 / 16.0;
+
+/// The normal equations' pattern for `bars` after `since` flips: `ne`'s ordering kept while
+/// `since` stays under [`REORDER_FLIPS`] per vertex, else a fresh one (then `since` restarts).
+fn renew(ne: NormalEquations, since: usize, n: usize, bars: &[Bar]) -> (NormalEquations, usize) {
+    if (since as f64) <= REORDER_FLIPS * n as f64 {
+        (repattern(&ne, bars), since)
+    } else {
+        (pattern(n, bars), 0)
+    }
+}
+
 /// Result of relaxing one level.
 pub(crate) struct Relaxed {
     pub(crate) iterations: usize,
@@ -134,8 +151,36 @@ impl Relaxed {
     }
 }
 
+/// The Levenberg–Marquardt damping schedule of a [`relax`]: `λ` (relative to the mean diagonal of
+/// `JᵀJ`) at the start and after every flip pass, and the factor it shrinks by after an accepted
+/// step (it grows ×4 after a rejected one).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Damping {
+    pub(crate) start: f64,
+    pub(crate) shrink: f64,
+}
+
+/// The cold solve's damping: strong at first, shrinking by 3 (Marquardt's schedule). The starts
+/// of the multistart are far from any realization, and the flat doubly covered D-form (congruent
+/// pieces) is a singular point of the length equations, flat to first order in every
+/// out-of-plane flex: with λ starting at 1e-10 or shrinking by 10, Gauss–Newton's steps left it
+/// for a bent branch (two congruent 16-arc circles at a fifth of the perimeter ended at volume
+/// 8e-5 instead of 0), and the ladder's flip decisions, taken at its levels' loose 1e-6 stall,
+/// changed (a rectangle with a circle ended 5e-6 off in volume).
+pub(crate) const COLD: Damping = Damping { start: 1e-4, shrink: 3.0 };
+
+/// A warm start's damping: a previous result at a nearby offset is close to an isometric
+/// realization, where undamped Gauss–Newton converges quadratically (a zero-residual problem:
+/// Dennis & Schnabel, *Numerical Methods for Unconstrained Optimization and Nonlinear
+/// Equations*, 1983, ch. 10; λ only regularizes the six rigid motions here). With the
+/// cold schedule each flip pass restarted at λ = 1e-4 and took ~10 steps of linear convergence
+/// (the soft modes of nearly flat regions damped by λ): 62–82 steps for a slider step of 1 % on
+/// the bench's crossed ellipses, 21–33 with this one, to the same volumes (1e-9).
+pub(crate) const WARM: Damping = Damping { start: 1e-10, shrink: 10.0 };
+
 /// Levenberg–Marquardt on a fixed triangulation until the step is negligible, then one pass of
-/// flips; repeated until nothing flips. `step_tol` is relative to the shape's size.
+/// flips; repeated until nothing flips. `step_tol` is relative to the shape's size. With the
+/// cold [`Damping`] ([`relax_damped`] for another).
 pub(crate) fn relax(
     pieces: &SeamPieces,
     x: &mut Vec<V3>,
@@ -144,8 +189,21 @@ pub(crate) fn relax(
     step_tol: f64,
     orientation: Orientation,
 ) -> Relaxed {
+    relax_damped(pieces, x, tri, budget, step_tol, orientation, COLD)
+}
+
+/// [`relax`] with the damping schedule `damping`.
+pub(crate) fn relax_damped(
+    pieces: &SeamPieces,
+    x: &mut Vec<V3>,
+    tri: &mut [Triangulation; 2],
+    budget: usize,
+    step_tol: f64,
+    orientation: Orientation,
+    damping: Damping,
+) -> Relaxed {
     let n = pieces.n;
-    let mut count = [HashMap::new(), HashMap::new()];
+    let mut count = [KeyMap::default(), KeyMap::default()];
     let mut flips = 0;
     for _ in 0..n {
         let f = flip_pass(x, tri, pieces, &mut count, orientation);
@@ -157,8 +215,10 @@ pub(crate) fn relax(
     let scale = size(x).max(f64::MIN_POSITIVE);
     let mut bars = bars(pieces, tri);
     let mut ne = pattern(n, &bars);
+    // Flips since `ne`'s ordering was computed (see [`renew`]).
+    let mut since = 0;
     let mut c = cost(x, &bars);
-    let mut lambda = 1e-4;
+    let mut lambda = damping.start;
     let mut iterations = 0;
     let mut converged = false;
     let mut window = (0usize, c);
@@ -174,9 +234,9 @@ pub(crate) fn relax(
                 if f > 0 {
                     flips += f;
                     bars = self::bars(pieces, tri);
-                    ne = pattern(n, &bars);
+                    (ne, since) = renew(ne, since + f, n, &bars);
                     c = cost(x, &bars);
-                    lambda = 1e-4;
+                    lambda = damping.start;
                     window = (iterations, c);
                 }
             }
@@ -196,7 +256,7 @@ pub(crate) fn relax(
         if ct <= c {
             *x = trial;
             c = ct;
-            lambda = (lambda / 3.0).max(1e-12);
+            lambda = (lambda / damping.shrink).max(1e-12);
         } else if !stalled {
             lambda *= 4.0;
             if lambda > 1e12 {
@@ -212,9 +272,9 @@ pub(crate) fn relax(
         flips += f;
         if f > 0 {
             bars = self::bars(pieces, tri);
-            ne = pattern(n, &bars);
+            (ne, since) = renew(ne, since + f, n, &bars);
             c = cost(x, &bars);
-            lambda = 1e-4;
+            lambda = damping.start;
             continue;
         }
         let worst = max_strain(x, &bars);
