@@ -77,6 +77,7 @@
 pub mod checks;
 pub mod clock;
 pub mod convex;
+pub mod density;
 pub mod isometry;
 pub mod mesh;
 pub mod metric;

@@ -14,6 +14,7 @@ use crate::arclen::{unit_tangent, ArcTable};
 use crate::contour::Contour;
 use crate::error::{Error, Result};
 use crate::validate;
+use super::density::Density;
 use super::metric::KeyMap;
 
 /// Relative accuracy of the arc lengths used to place seam samples: far below any visible or
@@ -59,6 +60,8 @@ pub struct Glue {
     offset: f64,
     /// Seam positions (arc length along A's walk, in `[0, L)`) of both pieces' corners, sorted.
     corners: Vec<f64>,
+    /// The curvature-graded spacing ([`Density`]), `None` where the even step serves.
+    density: Option<Density>,
 }
 
 impl Glue {
@@ -91,7 +94,8 @@ impl Glue {
         let mut corners: Vec<f64> =
             corners(&ta).into_iter().chain(corners(&tb).into_iter().map(|s| k * (s - offset))).map(|s| ta.wrap(s)).collect();
         crate::order::sort_f64(&mut corners);
-        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], offset, corners })
+        let density = Density::new(&ta, &tb, offset);
+        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], offset, corners, density })
     }
 
     /// Seam positions of `n` samples: equal steps `h = L/n` from 0, with the nearest free sample
@@ -114,7 +118,11 @@ impl Glue {
             let total = self.ta.total();
             let c = self.positions(n / 2);
             let next = |m: usize| if m + 1 < c.len() { c[m + 1] } else { total };
-            let mut u: Vec<f64> = (0..n).map(|k| if k % 2 == 0 { c[k / 2] } else { 0.5 * (c[k / 2] + next(k / 2)) }).collect();
+            let mid = |a: f64, b: f64| match &self.density {
+                None => 0.5 * (a + b),
+                Some(d) => d.inverse(0.5 * (d.forward(a) + d.forward(b))),
+            };
+            let mut u: Vec<f64> = (0..n).map(|k| if k % 2 == 0 { c[k / 2] } else { mid(c[k / 2], next(k / 2)) }).collect();
             // A corner the coarser level had no free sample for (several corners within one of
             // its steps) takes the new midpoint sample of its interval, if still free: every
             // corner becomes a seam vertex once the level is fine enough, as without nesting.
@@ -133,7 +141,14 @@ impl Glue {
         }
         let total = self.ta.total();
         let h = total / n as f64;
-        let mut u: Vec<f64> = (0..n).map(|k| k as f64 * h).collect();
+        // Even steps of F (the arc length itself where no density is needed, bit for bit).
+        let (f, step) = match &self.density {
+            None => (None, h),
+            Some(d) => (Some(d), d.weight() / n as f64),
+        };
+        let at = |x: f64| f.map_or(x, |d| d.inverse(x));
+        let of = |s: f64| f.map_or(s, |d| d.forward(s));
+        let mut u: Vec<f64> = (0..n).map(|k| at(k as f64 * step)).collect();
         let mut snapped = vec![false; n];
         snapped[0] = true;
         // Both pieces' corners at one seam point (a square's corner glued to a rectangle's) come
@@ -144,14 +159,14 @@ impl Glue {
             if (0..n).any(|k| snapped[k] && (u[k] - c).abs() <= same) || total - c <= same {
                 continue;
             }
-            let near = (c / h).round() as usize;
+            let near = (of(c) / step).round() as usize;
             for k in [near, near + 1, near.wrapping_sub(1)] {
                 if k == 0 || k >= n || snapped[k] {
                     continue;
                 }
                 let before = u[k - 1];
                 let after = if k + 1 < n { u[k + 1] } else { total };
-                if c - before > same && after - c > same && (c - k as f64 * h).abs() <= h {
+                if c - before > same && after - c > same && (of(c) - k as f64 * step).abs() <= step {
                     u[k] = c;
                     snapped[k] = true;
                     break;
