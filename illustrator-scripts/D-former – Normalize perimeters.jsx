@@ -242,7 +242,7 @@
     for (i = 0; i < paths.length; i++) {
       var f = target / lengths[i];
       if (!(f > 0) || !isFinite(f) || f > 1e4 || f < 1e-4) {
-        alert("Scaling " + (paths[i].name ? "\"" + paths[i].name + "\"" : "Path " + (i + 1)) + " by " + f +
+        alert("Scaling " + (paths[i].name ? "\"" + paths[i].name + "\"" : "Path " + (i + 1)) + " by " + f.toPrecision(4) +
           " is out of range; choose another target. Nothing was changed.", TITLE);
         return;
       }

@@ -107,6 +107,20 @@ test('Normalize about the first anchor keeps every path\'s first anchor in place
   });
 });
 
+test('an out-of-range scale is refused with the factor rounded to 4 significant digits', () => {
+  const h = createHost({ units: 'mm', shapes: shapes() });
+  const before = h.snapshot();
+  const lengths = Object.fromEntries(['A', 'B', 'C'].map((n) => [n, referenceLengthOf(h.find(n))]));
+  const [msg] = h.runScript(NORMALIZE, answer(4, '1000000000'));
+  const m = msg.match(/^Scaling "([ABC])" by ([0-9.e+]+) is out of range; choose another target\. Nothing was changed\.$/);
+  assert.ok(m, msg);
+  m.shift();
+  const want = (1e9 / MM) / lengths[m[0]];
+  assert.ok(m[1].replace(/e.*$/, '').replace('.', '').length <= 4, `not rounded: ${m[1]}`);
+  assert.ok(relErr(Number(m[1]), want) < 5e-4, `factor ${m[1]}, wanted ${want}`);
+  assert.deepEqual(h.snapshot(), before, 'document unchanged');
+});
+
 test('Normalize refuses bad selections and bad input, and Cancel changes nothing', () => {
   const check = (opts, respond, pattern) => {
     const h = createHost(opts);
