@@ -1,7 +1,9 @@
 /*
  * D-former - Normalize perimeters (Illustrator File > Scripts; ExtendScript, strict ES3).
  * Scales each selected closed path uniformly about a pivot so that all get the same perimeter:
- * the largest, the smallest, the mean, the first's, or an exact length in ruler units. Arc length
+ * the largest, the smallest, the mean, the first's, or an exact length in ruler units. A single
+ * path is scaled to an exact length. The pivot is a point of the bounding box or each path's first
+ * anchor, which then stays where it is (as the 2016 Modify Perimeter script did). Arc length
  * scales linearly under a uniform scale, so the factor for a path of length L is target / L
  * (Illustrator's PathItem.length). All factors are computed and checked before the first resize.
  * Self-contained on purpose (see the Measure script for why).
@@ -61,22 +63,27 @@
   }
 
   var TARGETS = ["Largest perimeter", "Smallest perimeter", "Mean perimeter", "First path's perimeter", "Exact length"];
-  var PIVOTS = ["Center", "Top left", "Top", "Top right", "Left", "Right", "Bottom left", "Bottom", "Bottom right"];
+  var EXACT = 4;
+  var PIVOTS = ["Center", "Top left", "Top", "Top right", "Left", "Right", "Bottom left", "Bottom", "Bottom right",
+    "First anchor (stays put)"];
+  /** The last pivot, the first anchor, is no Transformation: fit() scales about the centre and moves it back. */
+  var START = "start";
   var PIVOT_VALUES = [Transformation.CENTER, Transformation.TOPLEFT, Transformation.TOP, Transformation.TOPRIGHT,
-    Transformation.LEFT, Transformation.RIGHT, Transformation.BOTTOMLEFT, Transformation.BOTTOM, Transformation.BOTTOMRIGHT];
+    Transformation.LEFT, Transformation.RIGHT, Transformation.BOTTOMLEFT, Transformation.BOTTOM, Transformation.BOTTOMRIGHT,
+    START];
 
   /**
    * Ask for target and pivot. Returns null when cancelled.
-   * @param {string} unitName @param {string} suggested
+   * @param {string} unitName @param {string} suggested @param {number} first the target shown first
    * @returns {{target: number, exact: string, pivot: number} | null}
    */
-  function ask(unitName, suggested) {
+  function ask(unitName, suggested, first) {
     var w = new Window("dialog", TITLE);
     w.alignChildren = "fill";
     var g1 = w.add("group");
     g1.add("statictext", undefined, "Make every perimeter equal to:");
     var target = g1.add("dropdownlist", undefined, TARGETS, { name: "target" });
-    target.selection = target.items[0];
+    target.selection = target.items[first];
     var g2 = w.add("group");
     g2.add("statictext", undefined, "Exact length (" + unitName + "):");
     var exact = g2.add("edittext", undefined, suggested, { name: "length" });
@@ -156,13 +163,21 @@
    */
   function fit(p, target, pct, pivot) {
     var s0 = 1, l0 = p.length, s = pct / 100;
-    p.resize(pct, pct, true, true, true, true, 100, pivot);
+    var start = pivot === START ? p.pathPoints[0].anchor : null;
+    var about = start ? Transformation.CENTER : pivot;
+    /** @param {number} c */
+    function scale(c) {
+      p.resize(c, c, true, true, true, true, 100, about);
+      if (!start) return;
+      var moved = p.pathPoints[0].anchor;
+      p.translate(start[0] - moved[0], start[1] - moved[1]);
+    }
+    scale(pct);
     var len = p.length;
     for (var k = 0; k < 6 && Math.abs(len - target) > 1e-9 * target && len > 0; k++) {
       var next = len !== l0 ? s + (target - len) * (s - s0) / (len - l0) : s * target / len;
       if (!(next > 0) || !isFinite(next)) next = s * target / len;
-      var c = 100 * next / s;
-      p.resize(c, c, true, true, true, true, 100, pivot);
+      scale(100 * next / s);
       s0 = s; l0 = len; s = next;
       len = p.length;
     }
@@ -178,8 +193,8 @@
     var units = unitsOf(doc);
     var found = selectedPaths(doc);
     var paths = found.paths;
-    if (paths.length < 2) {
-      alert("Select at least two closed paths (found " + paths.length + ")." +
+    if (paths.length < 1) {
+      alert("Select two or more closed paths to give them one perimeter, or one to scale it to an exact length (found none)." +
         (found.skipped.length ? "\nNot usable: " + found.skipped.join(", ") + "." : ""), TITLE);
       return;
     }
@@ -203,8 +218,13 @@
       if (lengths[i] < min) min = lengths[i];
       if (lengths[i] > max) max = lengths[i];
     }
-    var choice = ask(units.name, (max * units.perPoint).toFixed(units.digits));
+    var choice = ask(units.name, (max * units.perPoint).toFixed(units.digits), paths.length === 1 ? EXACT : 0);
     if (choice === null) return;
+    if (paths.length === 1 && choice.target !== EXACT) {
+      alert("Only one closed path is selected: choose Exact length to scale it to a perimeter, or select two or more " +
+        "paths to give them one perimeter. Nothing was changed.", TITLE);
+      return;
+    }
     var target;
     if (choice.target === 0) target = max;
     else if (choice.target === 1) target = min;
@@ -222,7 +242,7 @@
     for (i = 0; i < paths.length; i++) {
       var f = target / lengths[i];
       if (!(f > 0) || !isFinite(f) || f > 1e4 || f < 1e-4) {
-        alert("Scaling " + (paths[i].name ? "\"" + paths[i].name + "\"" : "Path " + (i + 1)) + " by " + f +
+        alert("Scaling " + (paths[i].name ? "\"" + paths[i].name + "\"" : "Path " + (i + 1)) + " by " + f.toPrecision(4) +
           " is out of range; choose another target. Nothing was changed.", TITLE);
         return;
       }

@@ -327,7 +327,6 @@ pub fn normalize(
     target: &str,
     pivot: &str,
 ) -> Result<(String, String), String> {
-    let (shapes, paths, skipped) = choose(file, choice, 2, None)?;
     let target = match target {
         "largest" | "smallest" | "mean" | "first" => json!(target),
         length => json!(file
@@ -335,6 +334,15 @@ pub fn normalize(
             .parse(length)
             .map_err(|e| format!("--target: {e}"))?),
     };
+    // One shape is scaled to an exact length (a number); the other targets compare two or more.
+    let least = if target.is_number() { 1 } else { 2 };
+    let (shapes, paths, skipped) = choose(file, choice, least, None).map_err(|e| {
+        if least == 2 && e.contains("the file has 1 closed shape") {
+            format!("{e}; to scale one shape, give its perimeter: --target 300mm")
+        } else {
+            e
+        }
+    })?;
     let options = serde_json::from_value(json!({ "target": target, "pivot": pivot }))
         .map_err(|e| e.to_string())?;
     let result = api::normalize::normalize(&paths, &options).map_err(|e| e.to_string())?;
@@ -343,10 +351,11 @@ pub fn normalize(
         replace_outline(source, file, s, p, &mut edits)?;
     }
     let report = skipped + &format!(
-        "{} shapes normalized to perimeter {:.6} {} (scales {})\n",
-        shapes.len(),
+        "{} normalized to perimeter {:.6} {} (scale{} {})\n",
+        if shapes.len() == 1 { "1 shape".to_string() } else { format!("{} shapes", shapes.len()) },
         result.perimeter,
         file.scale.unit,
+        if shapes.len() == 1 { "" } else { "s" },
         result
             .scales
             .iter()

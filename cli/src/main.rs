@@ -75,7 +75,7 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Scale the shapes (two or more) to one perimeter, in place.
+    /// Scale the shapes (two or more, or one with --target LENGTH) to one perimeter, in place.
     Normalize {
         #[command(flatten)]
         file: FileArgs,
@@ -84,7 +84,7 @@ enum Command {
         /// largest, smallest, mean, first, or a length such as 300mm.
         #[arg(long, default_value = "largest")]
         target: String,
-        /// center (bounding box) or centroid.
+        /// center (bounding box), centroid, or start (each shape's first node stays in place).
         #[arg(long, default_value = "center")]
         pivot: String,
     },

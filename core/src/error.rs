@@ -162,7 +162,9 @@ impl Drop for UnitScope {
 /// in the caller's unit (the core has none; hosts convert before they call), followed by its
 /// name when the caller gave one ([`unit_scope`]).
 pub fn len(x: f64) -> String {
-    let v = significant(x, 4).to_string();
+    // Beyond what decimal rounding covers (about 1e-19 to 1e25), four digits in e-notation.
+    let huge = x.is_finite() && x != 0.0 && !(1e-18..1e24).contains(&x.abs());
+    let v = if huge { format!("{x:.3e}") } else { significant(x, 4).to_string() };
     UNIT.with(|u| match &*u.borrow() {
         Some(name) => format!("{v} {name}"),
         None => v,
@@ -188,6 +190,9 @@ mod tests {
             assert_eq!(len(0.799999), "0.8 in");
         }
         assert_eq!(len(0.799999), "0.8", "the unit ends with its scope");
+        assert_eq!(len(1.2345678e306), "1.235e306", "far beyond decimal rounding");
+        assert_eq!(len(-2.5e-30), "-2.500e-30");
+        assert_eq!(len(f64::NAN), "NaN");
         assert_eq!(deg(10.04999), "10");
         assert_eq!(deg(107.46), "107.5");
     }

@@ -71,7 +71,7 @@ pub fn normalize(contours: &[Contour], target: Target, pivot: Pivot, accuracy: f
         Target::Value(v) => v,
     };
     if !(target.is_finite() && target > 0.0) {
-        return Err(Error::Option { name: "target", reason: format!("must be a positive, finite perimeter, got {target}") });
+        return Err(Error::Option { name: "target", reason: format!("must be a positive, finite perimeter, got {}", crate::error::len(target)) });
     }
     let mut out = Vec::with_capacity(contours.len());
     let mut scales = Vec::with_capacity(contours.len());
@@ -101,8 +101,9 @@ pub fn normalize(contours: &[Contour], target: Target, pivot: Pivot, accuracy: f
             Contour::new(knots, piece).map_err(|_| Error::Option {
                 name: "target",
                 reason: format!(
-                    "scaling the {} path by {s:e} to perimeter {target} leaves the range of numbers; choose a smaller target",
-                    crate::error::ordinal(piece)
+                    "scaling the {} path by {s:.3e} to perimeter {} leaves the range of numbers; choose a smaller target",
+                    crate::error::ordinal(piece),
+                    crate::error::len(target)
                 ),
             })?
         };

@@ -108,39 +108,53 @@ fn lengths_in_messages_carry_the_unit_the_host_names() {
 /// Locking leaves: A's leaf k (even k) stands into y < 0, which is B's face; B has a slot there
 /// whose centre is the leaf's shoulder (where the head widens out of the neck) and whose length
 /// along the edge is the neck's drawn width minus twice the kerf (both nominal after cutting).
+/// With a seam allowance `a` the leaf stands on A's cut line y = −a and the shoulder is measured
+/// from the seam line y = 0, as far into B as it lies out of A.
+fn check_slots(kerf: f64, allowance: f64) {
+    let r = run(ConnectOptionsDto { kind: Some("leaves".into()), leaf: Some("lock".into()), kerf: Some(kerf), allowance: Some(allowance), ..Default::default() });
+    let what = format!("kerf {kerf}, allowance {allowance}");
+    assert!(r.warnings.is_empty(), "{what}: {:?}", r.warnings);
+    let a = flatten(&r.pieces[0].outline, 64);
+    let slots_b = &r.pieces[1].slots;
+    assert_eq!(slots_b.len(), 13, "{what}: B receives A's 13 leaves (even connectors)");
+    assert_eq!(r.pieces[0].slots.len(), 13, "{what}: A receives B's 13 leaves");
+    for k in (2..9).step_by(2) {
+        let x0 = 10.0 * k as f64;
+        // Width of A below y = −allowance around x0 at depth v: between the outline's crossings
+        // of the line y = −v within half a pitch of x0.
+        let width = |v: f64| {
+            let xs = crossings(&a, -v, x0 - 5.0, x0 + 5.0);
+            if xs.len() >= 2 { xs[xs.len() - 1] - xs[0] } else { 0.0 }
+        };
+        let neck = width(allowance + 0.3);
+        assert!((neck - (4.0 + kerf)).abs() < 0.02, "{what}, leaf {}: neck wanted {}, got {neck}", k + 1, 4.0 + kerf);
+        // The shoulder: the first depth beyond the cut line where the leaf is wider than its neck.
+        let shoulder = (1..6000).map(|i| allowance + 6.0 * i as f64 / 6000.0).find(|&v| width(v) > neck + 0.05).unwrap();
+        let slot = slots_b.iter().find(|s| (s.points[0].anchor[0] - x0).abs() < 5.0).expect("a slot at the leaf");
+        let xs: Vec<f64> = slot.points.iter().map(|p| p.anchor[0]).collect();
+        let ys: Vec<f64> = slot.points.iter().map(|p| p.anchor[1]).collect();
+        let (lo, hi) = (xs.iter().cloned().fold(f64::INFINITY, f64::min), xs.iter().cloned().fold(f64::NEG_INFINITY, f64::max));
+        let cy = ys.iter().sum::<f64>() / 4.0;
+        let cx = 0.5 * (lo + hi);
+        assert!((cx - x0).abs() < 1e-9, "{what}, slot {}: centred at x {cx}, wanted {x0}", k + 1);
+        assert!((-cy - shoulder).abs() < 0.05, "{what}, slot {}: at depth {}, the leaf's shoulder at {shoulder}", k + 1, -cy);
+        assert!(((hi - lo) - (neck - 2.0 * kerf)).abs() < 0.02, "{what}, slot {}: length {}, neck {neck} − 2 kerf", k + 1, hi - lo);
+        // The head is wider than the slot, so it holds once pushed through.
+        assert!(width(shoulder + 1.5) > (hi - lo) + 2.0, "{what}, leaf {}: head not wider than its slot", k + 1);
+    }
+}
+
 #[test]
 fn every_slot_is_where_its_leaf_lands_and_fits_the_neck() {
     for kerf in [0.0, 0.1] {
-        let r = run(ConnectOptionsDto { kind: Some("leaves".into()), leaf: Some("lock".into()), kerf: Some(kerf), ..Default::default() });
-        assert!(r.warnings.is_empty(), "kerf {kerf}: {:?}", r.warnings);
-        let a = flatten(&r.pieces[0].outline, 64);
-        let slots_b = &r.pieces[1].slots;
-        assert_eq!(slots_b.len(), 13, "B receives A's 13 leaves (even connectors)");
-        assert_eq!(r.pieces[0].slots.len(), 13, "A receives B's 13 leaves");
-        for k in (2..9).step_by(2) {
-            let x0 = 10.0 * k as f64;
-            // Width of A below y = 0 around x0 at depth v: between the outline's crossings of
-            // the line y = −v within half a pitch of x0.
-            let width = |v: f64| {
-                let xs = crossings(&a, -v, x0 - 5.0, x0 + 5.0);
-                if xs.len() >= 2 { xs[xs.len() - 1] - xs[0] } else { 0.0 }
-            };
-            let neck = width(0.3);
-            assert!((neck - (4.0 + kerf)).abs() < 0.02, "kerf {kerf} leaf {}: neck wanted {}, got {neck}", k + 1, 4.0 + kerf);
-            // The shoulder: the first depth where the leaf is wider than its neck.
-            let shoulder = (1..6000).map(|i| 6.0 * i as f64 / 6000.0).find(|&v| width(v) > neck + 0.05).unwrap();
-            let slot = slots_b.iter().find(|s| (s.points[0].anchor[0] - x0).abs() < 5.0).expect("a slot at the leaf");
-            let xs: Vec<f64> = slot.points.iter().map(|p| p.anchor[0]).collect();
-            let ys: Vec<f64> = slot.points.iter().map(|p| p.anchor[1]).collect();
-            let (lo, hi) = (xs.iter().cloned().fold(f64::INFINITY, f64::min), xs.iter().cloned().fold(f64::NEG_INFINITY, f64::max));
-            let cy = ys.iter().sum::<f64>() / 4.0;
-            let cx = 0.5 * (lo + hi);
-            assert!((cx - x0).abs() < 1e-9, "slot {}: centred at x {cx}, wanted {x0}", k + 1);
-            assert!((-cy - shoulder).abs() < 0.05, "slot {}: at depth {}, the leaf's shoulder at {shoulder}", k + 1, -cy);
-            assert!(((hi - lo) - (neck - 2.0 * kerf)).abs() < 0.02, "slot {}: length {}, neck {neck} − 2 kerf", k + 1, hi - lo);
-            // The head is wider than the slot, so it holds once pushed through.
-            assert!(width(shoulder + 1.5) > (hi - lo) + 2.0, "leaf {}: head not wider than its slot", k + 1);
-        }
+        check_slots(kerf, 0.0);
+    }
+}
+
+#[test]
+fn with_a_seam_allowance_every_slot_is_still_where_its_leaf_lands() {
+    for kerf in [0.0, 0.1] {
+        check_slots(kerf, 2.0);
     }
 }
 

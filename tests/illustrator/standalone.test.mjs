@@ -75,6 +75,52 @@ test('Normalize about the top-left pivot keeps each top-left corner', () => {
   });
 });
 
+const FIRST_ANCHOR = 9;
+const anchors = (it) => Array.from({ length: it.pathPoints.length }, (_, i) => it.pathPoints[i].anchor);
+
+test('Normalize scales one path to the exact length about its first anchor, shape kept', () => {
+  const h = createHost({ units: 'mm', shapes: [shapes()[0]] });
+  const a = h.find('A');
+  const before = anchors(a);
+  const k = (250 / MM) / referenceLengthOf(a);
+  const [msg] = h.runScript(NORMALIZE, answer(4, '250', FIRST_ANCHOR));
+  assert.match(msg, /^Target perimeter: 250\.000 mm\nA: /);
+  assert.ok(relErr(referenceLengthOf(a), 250 / MM) < 1e-9, `perimeter ${referenceLengthOf(a) * MM} mm, wanted 250`);
+  const after = anchors(a);
+  // A uniform scale by k about anchor 1: anchor 1 stays, every other anchor moves to s + k (p - s).
+  before.forEach((p, i) => {
+    const want = [before[0][0] + k * (p[0] - before[0][0]), before[0][1] + k * (p[1] - before[0][1])];
+    assert.ok(Math.hypot(after[i][0] - want[0], after[i][1] - want[1]) < 1e-9 * k * 100, `anchor ${i + 1}: ${after[i]}, wanted ${want}`);
+  });
+});
+
+test('Normalize about the first anchor keeps every path\'s first anchor in place', () => {
+  const h = createHost({ units: 'in', shapes: shapes() });
+  const items = ['A', 'B', 'C'].map((n) => h.find(n));
+  const firsts = items.map((it) => anchors(it)[0]);
+  const want = Math.max(...items.map(referenceLengthOf));
+  h.runScript(NORMALIZE, answer(0, '', FIRST_ANCHOR));
+  items.forEach((it, i) => {
+    assert.ok(relErr(referenceLengthOf(it), want) < 1e-9, `${it.name}: perimeter ${referenceLengthOf(it)}, wanted ${want}`);
+    const f = anchors(it)[0];
+    assert.ok(Math.hypot(f[0] - firsts[i][0], f[1] - firsts[i][1]) < 1e-9, `${it.name}: first anchor ${firsts[i]} kept, got ${f}`);
+  });
+});
+
+test('an out-of-range scale is refused with the factor rounded to 4 significant digits', () => {
+  const h = createHost({ units: 'mm', shapes: shapes() });
+  const before = h.snapshot();
+  const lengths = Object.fromEntries(['A', 'B', 'C'].map((n) => [n, referenceLengthOf(h.find(n))]));
+  const [msg] = h.runScript(NORMALIZE, answer(4, '1000000000'));
+  const m = msg.match(/^Scaling "([ABC])" by ([0-9.e+]+) is out of range; choose another target\. Nothing was changed\.$/);
+  assert.ok(m, msg);
+  m.shift();
+  const want = (1e9 / MM) / lengths[m[0]];
+  assert.ok(m[1].replace(/e.*$/, '').replace('.', '').length <= 4, `not rounded: ${m[1]}`);
+  assert.ok(relErr(Number(m[1]), want) < 5e-4, `factor ${m[1]}, wanted ${want}`);
+  assert.deepEqual(h.snapshot(), before, 'document unchanged');
+});
+
 test('Normalize refuses bad selections and bad input, and Cancel changes nothing', () => {
   const check = (opts, respond, pattern) => {
     const h = createHost(opts);
@@ -85,7 +131,8 @@ test('Normalize refuses bad selections and bad input, and Cancel changes nothing
     assert.deepEqual(h.snapshot(), before, `document unchanged (${pattern})`);
   };
   check({ noDocument: true }, undefined, /No document is open/);
-  check({ shapes: [shapes()[0]] }, undefined, /Select at least two closed paths \(found 1\)/);
+  check({ shapes: [] }, undefined, /Select two or more closed paths to give them one perimeter, or one to scale it to an exact length \(found none\)/);
+  check({ shapes: [shapes()[0]] }, answer(0), /Only one closed path is selected: choose Exact length to scale it to a perimeter, or select two or more paths to give them one perimeter\. Nothing was changed\./);
   check({ shapes: [shapes()[0], { name: 'line', polygon: [[0, 0], [5, 5]], closed: false }] }, undefined,
     /"line" is an open path\. A D-form needs closed outlines/);
   check({ shapes: shapes() }, answer(4, 'abc'), /Enter an exact length greater than 0 in mm \(got "abc"\)\. Nothing was changed\./);

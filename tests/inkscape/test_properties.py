@@ -269,6 +269,12 @@ class Measurements(unittest.TestCase):
         self.assertIn("drawn clockwise", err.splitlines()[0], "A (a rect) runs clockwise on screen")
         self.assertIn("counter-clockwise", err.splitlines()[1], "B is drawn counter-clockwise")
 
+    def test_one_selected_outline_is_measured_alone(self):
+        # Issue 15 req. 4: Measure on a single selection. B is a circle of radius 2.5 cm.
+        _, err, _ = run(Measure, "pieces_mm.svg", "--id=B", "--unit=cm")
+        self.assertIn(f"#B: perimeter {5 * math.pi:.4f} cm", err)
+        self.assertNotIn("differ", err, "no comparison with a single outline")
+
 
 if __name__ == "__main__":
     unittest.main()

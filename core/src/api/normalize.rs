@@ -43,6 +43,8 @@ fn target(v: Option<&Value>) -> Result<Target> {
             _ => Err(bad(&Value::Text(s.clone()))),
         },
         Some(Value::Number(x)) if x.is_finite() && *x > 0.0 => Ok(Target::Value(*x)),
+        // A number is a length: rounded for people, as in every message.
+        Some(Value::Number(x)) => Err(Error::Option { name: "target", reason: format!("must be {TARGETS}, got {}", crate::error::len(*x)) }),
         Some(v) => Err(bad(v)),
     }
 }

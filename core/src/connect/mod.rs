@@ -293,15 +293,26 @@ pub fn connect(a: &Contour, b: &Contour, raw: &RawOptions) -> Result<Connection>
         if let (Some((_, segs, tags)), true) = (&built, set.kind != Kind::Stitch) {
             let what = if set.kind == Kind::Leaves { "leaves" } else { "teeth" };
             let pairs = warnings::collisions(segs, tags, 8);
-            let names: Vec<String> = pairs
-                .iter()
-                .map(|&(i, j)| if i == j { format!("{}", i + 1) } else { format!("{} and {}", i + 1, j + 1) })
-                .collect();
-            if !names.is_empty() {
+            // Two connectors' shapes crossing, and one connector's shape crossing itself (folded
+            // at a sharp corner), are said apart: a connector named once in each list at most.
+            let mut own: Vec<usize> = pairs.iter().filter(|&&(i, j)| i == j).map(|&(i, _)| i).collect();
+            own.dedup();
+            let each: Vec<String> = pairs.iter().filter(|&&(i, j)| i != j).map(|&(i, j)| format!("{} and {}", i + 1, j + 1)).collect();
+            let own: Vec<String> = own.iter().map(|i| (i + 1).to_string()).collect();
+            let what_ran = match (each.is_empty(), own.is_empty()) {
+                (true, true) => None,
+                (false, true) => Some(format!("the {what} of connectors {} run into each other", warnings::list(&each))),
+                (true, false) => Some(format!("the {what} of connectors {} cross themselves", warnings::list(&own))),
+                (false, false) => Some(format!(
+                    "the {what} of connectors {} run into each other and those of connectors {} cross themselves",
+                    warnings::list(&each),
+                    warnings::list(&own)
+                )),
+            };
+            if let Some(what_ran) = what_ran {
                 warnings.push(format!(
-                    "On the {}, the {what} of connectors {} run into each other (a concave stretch tighter than the {what}): use fewer connectors or shorter {what}, or move them with `slide`.",
-                    w.name(),
-                    warnings::list(&names)
+                    "On the {}, {what_ran} (a corner or a concave stretch tighter than the {what}): use fewer connectors or shorter {what}, or move them with `slide`.",
+                    w.name()
                 ));
             }
         }
