@@ -1,7 +1,8 @@
 //! `simulate` on random pieces (convex ovals and often non-convex stars): no error for valid input, no explosion, a
 //! closed mesh, and stats that tell the truth. The flat lengths are recomputed here from the
-//! pieces (seam samples placed by the independent arc length of `common`), so a solver that
-//! claims `converged` while bending an edge is caught.
+//! pieces (each seam sample checked on its outline at one arc length of the gluing by the
+//! independent arc length of `common`), so a solver that claims `converged` while bending an
+//! edge is caught.
 
 mod common;
 use common::*;
@@ -40,6 +41,29 @@ fn at_arclen(segs: &[Cubic], lens: &[f64], s: f64, forward: bool) -> P {
         t = next;
     }
     eval(c, t)
+}
+
+/// The arc length `s` in `[0, L)` at which `walk(s)` is nearest `q` (the nearest of `table`'s
+/// evenly spaced points of the walk, then Newton steps along the tangent), and that distance.
+fn project(walk: &dyn Fn(f64) -> P, table: &[(f64, P)], q: P, total: f64) -> (f64, f64) {
+    let near = |p: P| (p[0] - q[0]).hypot(p[1] - q[1]);
+    let mut s = table.iter().min_by(|a, b| near(a.1).total_cmp(&near(b.1))).map_or(0.0, |t| t.0);
+    let d = 1e-4 * total / table.len() as f64;
+    for _ in 0..6 {
+        let (a, b) = (walk(s - d), walk(s + d));
+        let tangent = [(b[0] - a[0]) / (2.0 * d), (b[1] - a[1]) / (2.0 * d)];
+        let speed2 = tangent[0] * tangent[0] + tangent[1] * tangent[1];
+        if !(speed2 > 0.0) {
+            break;
+        }
+        let p = walk(s);
+        let step = ((q[0] - p[0]) * tangent[0] + (q[1] - p[1]) * tangent[1]) / speed2;
+        s += step.clamp(-total / table.len() as f64, total / table.len() as f64);
+        if step.abs() < 1e-12 * total {
+            break;
+        }
+    }
+    (s.rem_euclid(total), near(walk(s)))
 }
 
 fn d3(a: V3, b: V3) -> f64 {
@@ -89,14 +113,38 @@ proptest! {
         for (&(i, j), &c) in &seen {
             prop_assert!(c <= 2 && seen.get(&(j, i)) == Some(&c), "edge {i}->{j}: used {c} times, reverse {:?}", seen.get(&(j, i)));
         }
-        // Flat seam samples: A counter-clockwise from its first anchor, B clockwise from its
-        // first anchor + offset (connect's `start` convention), both at equal steps.
-        let flat: Vec<Vec<P>> = (0..2).map(|j| {
+        // Flat seam samples: where `flat` puts each seam vertex on each piece, checked here to lie
+        // on the outline at one arc length u_k of the gluing on both — A walked counter-clockwise
+        // from its first anchor, B clockwise from its first anchor + offset (connect's `start`
+        // convention) — with u_0 = 0 and u_k increasing. (The core spaces the u_k by curvature,
+        // so they are read, not assumed even.)
+        let mut flat: Vec<Vec<P>> = vec![vec![[f64::NAN; 2]; n]; 2];
+        for (f, (t, &p)) in r.triangles.iter().zip(&r.piece).enumerate() {
+            for m in 0..3 {
+                let k = r.seam.iter().position(|&v| v == t[m]).unwrap();
+                flat[p as usize][k] = r.flat[f][m];
+            }
+        }
+        prop_assert!(flat.iter().flatten().all(|q| q[0].is_finite()), "a seam vertex in no triangle of a piece");
+        let mut u = vec![[0.0f64; 2]; n];
+        for j in 0..2 {
             let ccw = signed_area(&segs[j].iter().map(|c| c[0]).collect::<Vec<_>>()) > 0.0;
             let forward = if j == 0 { ccw } else { !ccw };
             let s0 = if j == 0 { 0.0 } else { offset * perimeter };
-            (0..n).map(|k| at_arclen(&segs[j], &lens[j], s0 + k as f64 * perimeter / n as f64, forward)).collect()
-        }).collect();
+            let walk = |s: f64| at_arclen(&segs[j], &lens[j], s0 + s, forward);
+            let table: Vec<(f64, P)> = (0..512).map(|i| i as f64 * perimeter / 512.0).map(|s| (s, walk(s))).collect();
+            for k in 0..n {
+                let (s, gap) = project(&walk, &table, flat[j][k], perimeter);
+                prop_assert!(gap <= 1e-6 * perimeter, "piece {j}: seam vertex {k} is {gap} off the outline");
+                u[k][j] = s;
+            }
+        }
+        for k in 0..n {
+            let d = (u[k][0] - u[k][1]).rem_euclid(perimeter);
+            prop_assert!(d.min(perimeter - d) <= 1e-6 * perimeter, "seam vertex {k}: at {} on A but {} on B", u[k][0], u[k][1]);
+            prop_assert!(k == 0 || u[k][0] > u[k - 1][0], "seam vertices out of order: {:?}", &u[..=k]);
+        }
+        prop_assert!(u[0][0].min(perimeter - u[0][0]) <= 1e-6 * perimeter, "seam vertex 0 is not at A's first anchor");
         let s = &r.stats;
         let mut strain = 0.0f64;
         for (t, &p) in r.triangles.iter().zip(&r.piece) {
