@@ -11,6 +11,11 @@ from dformer_layers import add_labels, add_paths, piece_group
 from dformer_pieces import describe, path_data, read_pieces, replace_outline
 
 
+def default_count():
+    """The core's default number of connectors, from `defaults()`."""
+    return int(next(d["value"] for d in call("defaults")["options"] if d["name"] == "count"))
+
+
 class Connect(DformerEffect):
     """The two selected pieces: A is the first selected, B the second."""
 
@@ -23,7 +28,7 @@ class Connect(DformerEffect):
         add("--kind", default="stitch", help="stitch, teeth, leaves or hybrid")
         add("--spacing", default="count", help="count (a number of connectors) or pitch (a distance)")
         add("--count", type=int, default=24, help="Number of connectors on each piece")
-        add("--pitch", type=float, default=10.0, help="Distance between connectors along the edge (rounded to divide the perimeter)")
+        add("--pitch", type=float, default=0.0, help="Distance between connectors along the edge (rounded to divide the perimeter; 0: the perimeter over the core's default count)")
         add("--slide", type=float, default=0.0, help="Shift of every connector, as a fraction of the pitch (0-1; with both starts 0 too: automatic, clear of corners)")
         add("--start_a", type=float, default=0.0, help="Connector 1 on piece A: distance along A from its first node")
         add("--start_b", type=float, default=0.0, help="Connector 1 on piece B: distance along B from its first node")
@@ -53,7 +58,12 @@ class Connect(DformerEffect):
         if o.allowance != 0:
             opts["allowance"] = o.allowance
         if o.spacing == "pitch":
-            opts["pitch"] = o.pitch
+            # 0: the pitch the core's default count gives, perimeter / defaults().count (no
+            # number of the extension's own: the count is the core's).
+            if o.pitch != 0:
+                opts["pitch"] = o.pitch
+            else:
+                opts["count"] = default_count()
         else:
             opts["count"] = o.count
         for name in ("diameter", "inset", "length"):

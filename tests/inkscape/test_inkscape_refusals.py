@@ -44,7 +44,7 @@ MISSING = None if INKSCAPE and XVFB and XDOTOOL and XPROP else "inkscape, Xvfb, 
 #: The dialog's settings (dformer_connect.inx), written in full for every run so that nothing
 #: from an earlier run is left over.
 DEFAULTS = {
-    "tab": "connectors", "kind": "stitch", "spacing": "count", "count": "24", "pitch": "10", "slide": "0",
+    "tab": "connectors", "kind": "stitch", "spacing": "count", "count": "24", "pitch": "0", "slide": "0",
     "start_a": "0", "start_b": "0", "diameter": "0", "inset": "0", "length": "0", "angle": "90",
     "leaf": "tab", "allowance": "0", "invert": "false", "kerf": "0", "labels": "true", "label_size": "0",
     "unit": "document",

@@ -23,6 +23,7 @@ from support import distance, inside, perimeter, point_at, rel, reverse, segment
 
 import inkex
 
+from dformer_bridge import call
 from dformer_connect import Connect
 from dformer_measure import Measure
 from dformer_normalize import Normalize
@@ -166,6 +167,13 @@ class ConnectProperties(unittest.TestCase):
         # 0.2 cm = 2 mm; 0.35 cm = 3.5 mm; pitch 15 mm -> 8 connectors.
         args = ["--spacing=pitch", "--pitch=1.5", "--diameter=0.2", "--inset=0.35", "--slide=0.5", "--unit=cm"]
         self.check_stitch("connect_mm.svg", args, 8, 3.5, 2.0, 0.5)
+
+    def test_pitch_0_spaces_by_the_perimeter_over_the_cores_default_count(self):
+        # Before, the dialog's pitch default was a fixed 10 display units (10 in in an inch
+        # document). 0 now means the pitch the core's default count gives: 120 mm / count.
+        count = int(next(d["value"] for d in call("defaults")["options"] if d["name"] == "count"))
+        pitch = 120.0 / count
+        self.check_stitch("connect_mm.svg", ["--spacing=pitch", "--pitch=0", "--slide=0.5"], count, pitch / 2, pitch / 4, 0.5)
 
     def test_start_offsets_move_connector_one_on_each_piece(self):
         args = ["--count=6", "--slide=0", "--start_a=7", "--start_b=13", "--inset=4", "--diameter=2"]

@@ -4,12 +4,12 @@
  * the preview; Apply writes only a design that computed without error. */
 (function (DF) {
   'use strict';
-  var MM = 72 / 25.4;
   var DEFAULT_PARAMS = {
     normalize: true, target: 'largest', exact: 0, pivot: 'center',
-    kind: 'stitch', spacing: 'count', count: null, pitch: 10 * MM, slide: 0,
+    kind: 'stitch', spacing: 'count', count: null, pitch: null, pitchTyped: false, slide: 0,
     // Sizes 0: automatic (the core's fractions of the pitch); count and angle null: the core's
-    // defaults() — no number of the panel's own.
+    // defaults() — no number of the panel's own. Pitch until typed: the one the core's default
+    // count gives (startingPitch).
     diameter: 0, inset: 0, length: 0, angle: null, leaf: 'tab', allowance: 0, invert: false, kerf: 0, labels: true,
     start: [{ mode: 'first', anchor: 1, offset: 0 }, { mode: 'first', anchor: 1, offset: 0 }],
   };
@@ -44,7 +44,7 @@
   /** Length fields: where each value (points) lives. */
   var LEN = {
     exact: { get: function () { return params.exact; }, set: function (v) { params.exact = v; }, min: 0 },
-    pitch: { get: function () { return params.pitch; }, set: function (v) { params.pitch = v; }, min: 0 },
+    pitch: { get: function () { return params.pitch || 0; }, set: function (v) { params.pitch = v; params.pitchTyped = true; }, min: 0 },
     diameter: { get: function () { return params.diameter; }, set: function (v) { params.diameter = v; }, min: 0 },
     inset: { get: function () { return params.inset; }, set: function (v) { params.inset = v; }, min: 0 },
     length: { get: function () { return params.length; }, set: function (v) { params.length = v; }, min: 0 },
@@ -79,6 +79,23 @@
       if (o.name === 'angle' && params.angle == null) params.angle = o.value;
     });
     syncControls();
+  }
+
+  /** Spacing by distance with a pitch the user has not typed: perimeter / defaults().count (the
+   * pitch the core's default count gives), rounded to 0.01 of the display unit. The perimeter is
+   * the one connect spaces along (after normalizing), else the first piece's as measured. */
+  function startingPitch() {
+    if (params.spacing !== 'pitch' || params.pitchTyped || !coreDefaults) return;
+    var count = coreDefaults.options.filter(function (o) { return o.name === 'count'; })[0].value;
+    var d = DF.design.compute(selection, Object.assign({}, params, { spacing: 'count', count: count }));
+    var m = d.measures && d.measures[0];
+    var perimeter = d.ok && d.perimeter > 0 ? d.perimeter : m && m.ok ? m.m.perimeter : 0;
+    if (!(perimeter > 0)) return;
+    var pitch = DF.units.toPoints(Math.round(DF.units.toUnits(perimeter / count, unit) * 100) / 100, unit);
+    if (pitch === params.pitch) return;
+    params.pitch = pitch;
+    var input = $('#pitch');
+    if (input && document.activeElement !== input) input.value = lenText(pitch);
   }
 
   function fmt(points) {
@@ -253,6 +270,7 @@
     pending = true;
     window.requestAnimationFrame(function () {
       pending = false;
+      startingPitch();
       design = DF.design.compute(selection, params);
       renderMeasure();
       renderResult();
