@@ -3,18 +3,9 @@
 //! scaled rectangle and circle; without a length it is refused, saying how, and writes nothing.
 
 use std::f64::consts::PI;
-use std::process::Command;
+mod common;
+use common::dformer;
 
-struct Run {
-    ok: bool,
-    stdout: String,
-    stderr: String,
-}
-
-fn dformer(args: &[&str]) -> Run {
-    let out = Command::new(env!("CARGO_BIN_EXE_dformer")).args(args).output().expect("dformer runs");
-    Run { ok: out.status.success(), stdout: String::from_utf8_lossy(&out.stdout).into(), stderr: String::from_utf8_lossy(&out.stderr).into() }
-}
 
 fn write(name: &str, svg: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("dformer-normalize-one-{}", std::process::id()));

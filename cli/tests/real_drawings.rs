@@ -5,22 +5,13 @@
 
 use std::f64::consts::PI;
 use std::path::PathBuf;
-use std::process::Command;
+mod common;
+use common::{dformer, Run};
 
 fn fixture(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tests/fixtures/drawings").join(name)
 }
 
-struct Run {
-    ok: bool,
-    stdout: String,
-    stderr: String,
-}
-
-fn dformer(args: &[&str]) -> Run {
-    let out = Command::new(env!("CARGO_BIN_EXE_dformer")).args(args).output().expect("dformer runs");
-    Run { ok: out.status.success(), stdout: String::from_utf8_lossy(&out.stdout).into(), stderr: String::from_utf8_lossy(&out.stderr).into() }
-}
 
 /// `dformer measure FILE`: (name, perimeter) per stdout line.
 fn measured(run: &Run) -> Vec<(String, f64)> {

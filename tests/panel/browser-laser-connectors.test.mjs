@@ -4,8 +4,7 @@
 // (getTotalLength, isPointInFill) and checked against closed forms of the two circles drawn here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { usePanelBrowser, openApp, openSvgFiles, waitReady } from './support.mjs';
+import { usePanelBrowser, openApp, openSvgFiles, waitReady, downloadSvg, readSvgBack } from './support.mjs';
 
 const panel = usePanelBrowser();
 
@@ -25,14 +24,10 @@ async function download(act) {
     slots: document.querySelectorAll('#preview .slot').length,
     seams: document.querySelectorAll('#preview .seam').length,
   }));
-  const [file] = await Promise.all([page.waitForEvent('download'), page.click('#apply-btn')]);
-  const text = readFileSync(await file.path(), 'utf8');
+  const text = await downloadSvg(page);
   await page.close();
-  const blank = await panel.browser.newPage();
-  const got = await blank.evaluate((svgText) => {
-    document.body.innerHTML = svgText.replace(/^<\?xml[^>]*>/, '');
+  const got = await readSvgBack(panel, text, (mm) => {
     const svg = document.querySelector('svg');
-    const mm = parseFloat(svg.getAttribute('width')) / svg.viewBox.baseVal.width;
     const pieces = [...svg.querySelectorAll('#layer-cut > g')].map((g) => {
       const key = g.id.replace(/^cut-/, '');
       const outline = g.querySelector('path.outline');
@@ -56,8 +51,7 @@ async function download(act) {
       seamsElsewhere: svg.querySelectorAll('path.seam').length - svg.querySelectorAll('#layer-score path.seam').length,
       slotsElsewhere: svg.querySelectorAll('path.slot').length - svg.querySelectorAll('#layer-cut path.slot').length,
     };
-  }, text);
-  await blank.close();
+  });
   return { preview, ...got };
 }
 

@@ -3,8 +3,7 @@
 // closed form of the circle drawn here and read back by Chromium's SVG engine (getTotalLength).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { usePanelBrowser, openApp, openSvgFiles, waitReady, measureRows } from './support.mjs';
+import { usePanelBrowser, openApp, openSvgFiles, waitReady, measureRows, downloadSvg, readSvgBack } from './support.mjs';
 
 const panel = usePanelBrowser();
 
@@ -25,20 +24,12 @@ test('one shape: measured, then scaled to an exact length (pivot start) and down
   await page.selectOption('#norm-pivot', 'start');
   await page.waitForFunction(() => document.body.dataset.state === 'ready');
   assert.equal(await page.isDisabled('#apply-btn'), false, 'Download SVG enabled for one scaled shape');
-  const [file] = await Promise.all([page.waitForEvent('download'), page.click('#apply-btn')]);
-  const text = readFileSync(await file.path(), 'utf8');
+  const text = await downloadSvg(page);
   await page.close();
-  const blank = await panel.browser.newPage();
-  const got = await blank.evaluate((svgText) => {
-    document.body.innerHTML = svgText.replace(/^<\?xml[^>]*>/, '');
-    const svg = document.querySelector('svg');
-    const mm = parseFloat(svg.getAttribute('width')) / svg.viewBox.baseVal.width;
-    return [...svg.querySelectorAll('#layer-cut path.outline')].map((o) => {
-      const b = o.getBBox();
-      return { perimeter: o.getTotalLength() * mm, width: b.width * mm, height: b.height * mm };
-    });
-  }, text);
-  await blank.close();
+  const got = await readSvgBack(panel, text, (mm) => [...document.querySelectorAll('#layer-cut path.outline')].map((o) => {
+    const b = o.getBBox();
+    return { perimeter: o.getTotalLength() * mm, width: b.width * mm, height: b.height * mm };
+  }));
   assert.equal(got.length, 1, 'one outline on the cut layer');
   // Scaled 300 / 2πR: still a circle, of diameter 300 / π.
   assert.ok(Math.abs(got[0].perimeter - 300) < 1e-3 * 300, `perimeter ${got[0].perimeter} mm, wanted 300`);

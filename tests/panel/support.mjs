@@ -98,3 +98,27 @@ export function measureRows(page) {
     key: tr.children[0].textContent, name: tr.children[1].textContent, perimeter: tr.children[2].textContent,
   })));
 }
+
+/** Clicks Download SVG (#apply-btn) on `page`; the text of the SVG it saved. */
+export async function downloadSvg(page) {
+  const [file] = await Promise.all([page.waitForEvent('download'), page.click('#apply-btn')]);
+  return readFileSync(await file.path(), 'utf8');
+}
+
+/**
+ * Reads a downloaded SVG back with Chromium's own SVG engine: `svgText` becomes a blank page's
+ * body, and `read(mm)` runs there with `mm` the millimetres per user unit of its root `<svg>`.
+ */
+export async function readSvgBack(panel, svgText, read) {
+  const blank = await panel.browser.newPage();
+  try {
+    const mm = await blank.evaluate((t) => {
+      document.body.innerHTML = t.replace(/^<\?xml[^>]*>/, '');
+      const svg = document.querySelector('svg');
+      return parseFloat(svg.getAttribute('width')) / svg.viewBox.baseVal.width;
+    }, svgText);
+    return await blank.evaluate(read, mm);
+  } finally {
+    await blank.close();
+  }
+}
