@@ -133,5 +133,5 @@ for (const [name, a] of [['Pebble + circle (the browser app sample)', pebble], [
   console.log(`== ${name} (WASM, non-convex, 256 seam vertices) ==`);
   console.log(`  time ${ms.toFixed(1)} ms (≤ 1000 ms) ${mark(ms <= 1000)}   converged ${s.converged} ${mark(s.converged)}   max strain ${s.maxStrain.toExponential(2)} reflex ${s.reflexEdges} iterations ${s.iterations}`);
   const floor = samplingFloor(r);
-  console.log(`  sampling floor: no mesh on these equal-arc seam samples gets below max edge strain ${floor.toExponential(2)} (≤ 1e-3 needed) ${mark(floor <= 1e-3)}${floor > 1e-3 ? ' — the samples, not the solver, rule out a converged answer' : ''}`);
+  console.log(`  sampling floor: no mesh on these seam samples gets below max edge strain ${floor.toExponential(2)} (≤ 1e-3 needed) ${mark(floor <= 1e-3)}${floor > 1e-3 ? ' — the samples, not the solver, rule out a converged answer' : ''}`);
 }
