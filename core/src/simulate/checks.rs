@@ -201,8 +201,13 @@ fn segment_crosses(p: V3, q: V3, a: V3, b: V3, c: V3, eps: f64, flat: f64) -> bo
 /// ones that start before it ends), so the pairs tested are those whose boxes overlap, as
 /// before, without the `F²/2` box tests (130,000 at 256 seam vertices) of every pair.
 pub fn self_intersecting(x: &[V3], tri: &[Triangulation; 2]) -> bool {
-    let flat = 1e-6 * centroid_and_radius(x).1;
     let faces: Vec<[usize; 3]> = tri.iter().flat_map(|t| t.tris.iter().copied()).collect();
+    faces_cross(x, &faces)
+}
+
+/// [`self_intersecting`] for any closed triangle mesh (`faces` index `x`).
+pub fn faces_cross(x: &[V3], faces: &[[usize; 3]]) -> bool {
+    let flat = 1e-6 * centroid_and_radius(x).1;
     let boxes: Vec<(V3, V3)> = faces
         .iter()
         .map(|f| {

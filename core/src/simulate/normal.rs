@@ -228,6 +228,50 @@ impl NormalEquations {
         d.iter().all(|v| v.is_finite()).then_some(d)
     }
 
+    /// `−M⁻¹ g` with the matrix of the last successful [`NormalEquations::solve_blocks`] or
+    /// [`NormalEquations::solve`] (a modified Newton step: new gradient, old factor); `None`
+    /// when there is no factorization to reuse.
+    pub fn resolve(&self, g: &[f64]) -> Option<Vec<f64>> {
+        if !self.factored {
+            return None;
+        }
+        let d = self.substitute(g);
+        d.iter().all(|v| v.is_finite()).then_some(d)
+    }
+
+    /// Blocks of the factor `L` (its fill; the bench prints it).
+    pub fn factor_blocks(&self) -> usize {
+        self.lp[self.n]
+    }
+
+    /// Solves `(M + λ·μ I) Δ = −g` for a matrix given by its blocks: `diag[v]` the diagonal
+    /// block of vertex `v`, `off[p]` the block (rows of `a`, columns of `b`) of pair `p = (a, b)`
+    /// in the order given to [`NormalEquations::new`]. This is the general form of
+    /// [`NormalEquations::solve`] for residuals of more than two vertices (a hinge's dihedral
+    /// angle has four), whose `JᵀJ` blocks are not `±w u uᵀ`.
+    pub fn solve_blocks(&mut self, diag: &[B3], off: &[B3], g: &[f64], lambda: f64) -> Option<Vec<f64>> {
+        for (v, d) in diag.iter().enumerate() {
+            self.diag[self.pos[v]] = *d;
+        }
+        self.off.iter_mut().for_each(|b| *b = ZERO);
+        for (&(i, j, s), m) in self.pairs.iter().zip(off) {
+            // The stored block is (row min, column max) of the permuted pair.
+            let m = if i < j { *m } else { [0, 1, 2].map(|r| [0, 1, 2].map(|c| m[c][r])) };
+            for r in 0..3 {
+                for c in 0..3 {
+                    self.off[s][r][c] += m[r][c];
+                }
+            }
+        }
+        self.damp(lambda);
+        self.factored = self.factor();
+        if !self.factored {
+            return None;
+        }
+        let d = self.substitute(g);
+        d.iter().all(|v| v.is_finite()).then_some(d)
+    }
+
     /// The matrix's values: `m` on both diagonal blocks of its pair, `−m` off the diagonal,
     /// then `λ·μ` on the diagonal (μ the mean of the diagonal entries).
     fn assemble(&mut self, blocks: &[B3], lambda: f64) {
@@ -243,6 +287,11 @@ impl NormalEquations {
                 }
             }
         }
+        self.damp(lambda);
+    }
+
+    /// Adds `λ·μ` to the diagonal, μ the mean of the diagonal entries.
+    fn damp(&mut self, lambda: f64) {
         let mu = self.diag.iter().map(|b| b[0][0] + b[1][1] + b[2][2]).sum::<f64>() / (3 * self.n).max(1) as f64;
         for b in &mut self.diag {
             for a in 0..3 {
@@ -501,5 +550,72 @@ mod tests {
         // The fallback ordering (the natural one), used if AMD ever refuses a graph.
         let mut ne = NormalEquations::natural(24, &strips);
         check_against_dense(&mut ne, 24, &strips, "crossing strips, natural order");
+    }
+    /// The general block form against a dense `JᵀJ + λμI` of made-up four-vertex residual rows
+    /// (a hinge's support), pairs given in both orientations.
+    #[test]
+    fn solve_blocks_matches_a_dense_elimination() {
+        let n = 10;
+        let rows: Vec<([usize; 4], [[f64; 3]; 4])> = (0..14)
+            .map(|r| {
+                let v = [r % n, (r + 1) % n, (r + 3) % n, (r + 6) % n];
+                let g = [0, 1, 2, 3].map(|k| [0, 1, 2].map(|a| ((r * 13 + k * 5 + a * 7) as f64 * 0.71).sin()));
+                (v, g)
+            })
+            .collect();
+        let mut pairs: Vec<(usize, usize)> = Vec::new();
+        for (v, _) in &rows {
+            for a in 0..4 {
+                for b in a + 1..4 {
+                    let (p, q) = (v[a], v[b]);
+                    if !pairs.contains(&(p, q)) && !pairs.contains(&(q, p)) {
+                        pairs.push((p, q));
+                    }
+                }
+            }
+        }
+        let n3 = 3 * n;
+        let mut h = vec![vec![0.0f64; n3]; n3];
+        let mut diag = vec![ZERO; n];
+        let mut off = vec![ZERO; pairs.len()];
+        for (v, g) in &rows {
+            for a in 0..4 {
+                for b in 0..4 {
+                    for r in 0..3 {
+                        for c in 0..3 {
+                            h[3 * v[a] + r][3 * v[b] + c] += g[a][r] * g[b][c];
+                        }
+                    }
+                }
+            }
+            for a in 0..4 {
+                for r in 0..3 {
+                    for c in 0..3 {
+                        diag[v[a]][r][c] += g[a][r] * g[a][c];
+                    }
+                }
+                for b in 0..4 {
+                    if let Some(s) = pairs.iter().position(|&p| p == (v[a], v[b])) {
+                        for r in 0..3 {
+                            for c in 0..3 {
+                                off[s][r][c] += g[a][r] * g[b][c];
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        let lambda = 0.2;
+        let mu = (0..n3).map(|k| h[k][k]).sum::<f64>() / n3 as f64;
+        for (k, row) in h.iter_mut().enumerate() {
+            row[k] += lambda * mu;
+        }
+        let g: Vec<f64> = (0..n3).map(|k| (k as f64 * 0.37).cos()).collect();
+        let mut ne = NormalEquations::new(n, &pairs);
+        let d = ne.solve_blocks(&diag, &off, &g, lambda).expect("SPD system");
+        for k in 0..n3 {
+            let r: f64 = (0..n3).map(|c| h[k][c] * d[c]).sum::<f64>() + g[k];
+            assert!(r.abs() < 1e-10, "row {k}: residual wanted 0, got {r}");
+        }
     }
 }

@@ -40,7 +40,7 @@ pub struct Stats {
 
 
 /// Angle at `a` in triangle (a, b, c), robust near 0 and π.
-fn angle(a: V3, b: V3, c: V3) -> f64 {
+pub(crate) fn angle(a: V3, b: V3, c: V3) -> f64 {
     let (u, v) = (sub(b, a), sub(c, a));
     norm(cross(u, v)).atan2(dot(u, v))
 }
