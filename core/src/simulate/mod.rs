@@ -54,12 +54,15 @@
 //! `O(h³ (κ_A² − κ_B²))` for step `h`); both are residuals, so the solver takes the least-squares
 //! compromise and the stats report the strain against each piece honestly.
 //!
-//! *Non-convex pieces.* The triangulation is then a constrained one (ear clipping; a flip is
-//! only made when the new chord stays inside the flat piece), so every edge length is still a
-//! true flat distance. The result is an isometric, plausible shape; it may keep reflex edges
-//! (`stats.reflexEdges`) and negative seam defects, and `converged` says whether the isometry
-//! equations were met.
-//!
+//! *Non-convex pieces.* The convex path still runs first (a constrained triangulation: ear
+//! clipping, a flip only where the new chord stays inside the flat piece), and its answer is
+//! kept when it meets every promise — e.g. two congruent pieces at offset 0, the flat doubly
+//! covered sheet. Otherwise the [`sheet`] path solves the pair as two inextensible elastic
+//! sheets with interior vertices (discrete shells, Grinspun et al. 2003), followed by a homotopy
+//! from convex twins of the pieces and thinned until every edge is within 1e-3 of its flat
+//! length; `converged` then also says the mesh is unfolded (no bend above 90° inside a piece)
+//! and free of self-intersections. Its vertices are the seam's first, then the interior ones.
+
 //! ## Files
 //! - [`options`]: user options and their checks; [`seam`]: the two sampled pieces;
 //!   [`metric`]: chord triangulations of a flat polygon and flips;
@@ -68,11 +71,15 @@
 //!   Levenberg–Marquardt step ([`normal`]: its sparse LDLᵀ);
 //! - [`solve`]: which path solves a gluing; [`convex`]: the Alexandrov path (LM with flips
 //!   towards convexity, the multistart ladder, hull restarts, polygon pairs on their cone points);
+//!   [`sheet`]: the elastic-sheet path of non-convex pairs (meshes with interior vertices, the
+//!   shell energy, the homotopy from convex twins);
+//! - [`density`]: seam samples spaced by the curvature mismatch of the two pieces;
 //! - [`checks`]: dihedral signs, convexity as a whole, flat folds; [`stats`]: strain, seam gap,
 //!   area, angle defects, volume; [`clock`]: a timer that works natively and in wasm32.
 //!
 //! Imports run one way: `vec3`, `metric` ← `seam`, `mesh`, `checks`, `isometry` ← `convex` ←
-//! `solve` ← this module; `stats` reads `mesh` and `checks`.
+//! `solve` ← this module; `stats` reads `mesh` and `checks`; `sheet` reads `convex` (the twins'
+//! polyhedron), `checks`, `stats` and `normal`, and only this module reads `sheet`.
 
 pub mod checks;
 pub mod clock;
@@ -84,6 +91,7 @@ pub mod metric;
 pub mod normal;
 pub mod options;
 pub mod seam;
+pub mod sheet;
 pub mod solve;
 pub mod stats;
 pub mod vec3;
@@ -93,10 +101,12 @@ use crate::error::Result;
 pub use options::SimulateOptions;
 pub use stats::Stats;
 
-/// A solved D-form: a closed triangle mesh whose vertices are the seam vertices.
+/// A solved D-form: a closed triangle mesh. Its first vertices are the seam vertices; a
+/// non-convex pair's answer from the sheet path has interior vertices after them.
 #[derive(Debug, Clone)]
 pub struct Simulation {
-    /// Seam vertex positions (input units), centred on their centroid.
+    /// Vertex positions (input units), centred on their centroid: the seam vertices, then (sheet
+    /// path) the interior vertices of A and of B.
     pub vertices: Vec<[f64; 3]>,
     /// Outward-oriented triangles (counter-clockwise seen from outside).
     pub triangles: Vec<[usize; 3]>,
@@ -116,8 +126,20 @@ pub struct Simulation {
 pub fn simulate(a: &Contour, b: &Contour, options: &SimulateOptions) -> Result<Simulation> {
     let timer = clock::Timer::start();
     let glue = seam::Glue::new(a, b, options.offset)?;
-    let (pieces, solution) = solve::solve(&glue, options)?;
-    let mut sim = stats::finish(&pieces, solution);
+    let convex = glue.sample(seam::COARSEST).flat.iter().all(|f| checks::is_convex_polygon(&f.pts));
+    // A pair with a non-convex piece: the convex path gives the sheet path its start (or, when
+    // it meets every promise, e.g. the flat doubly covered sheet, the answer) on a short budget.
+    // A previous result's vertices are no warm start here: a sheet's answer has interior vertices.
+    let first = if convex { options.clone() } else { SimulateOptions { max_iterations: options.max_iterations.min(sheet::START_BUDGET), warm: None, ..options.clone() } };
+    let (pieces, solution) = solve::solve(&glue, &first)?;
+    let convex = pieces.flat.iter().all(|f| checks::is_convex_polygon(&f.pts));
+    let left = options.max_iterations.saturating_sub(solution.iterations);
+    let mut sim = stats::finish(&pieces, solution.clone());
+    if !convex && !solution.converged && left > 0 {
+        if let Some(sheet) = sheet::simulate(&pieces, &solution, sim.stats.max_strain, left) {
+            sim = sheet;
+        }
+    }
     sim.stats.ms = timer.elapsed_ms();
     Ok(sim)
 }

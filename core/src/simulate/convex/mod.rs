@@ -347,3 +347,36 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
     }
     Ok(best.map(|(x, tri, converged, _)| (x, tri, converged, false)))
 }
+
+/// The convex polyhedron of two convex sample polygons given as they are (no outlines behind
+/// them: the sheet path's convex twins), on the ladder of their own every-other-vertex
+/// subpolygons down to [`crate::simulate::seam::COARSEST`]; the quick pass, then the patient one.
+/// `None` unless the finest level converged to a good (convex, undented) branch.
+pub fn solve_samples(pieces: &SeamPieces, cap: usize) -> Option<Solution> {
+    let mut levels = vec![pieces.n];
+    while levels[levels.len() - 1] % 2 == 0 && levels[levels.len() - 1] / 2 >= super::seam::COARSEST {
+        levels.push(levels[levels.len() - 1] / 2);
+    }
+    levels.reverse();
+    let samples: Vec<SeamPieces> = levels
+        .iter()
+        .map(|&m| {
+            let stride = pieces.n / m;
+            let flat = [0, 1].map(|p| {
+                let f = &pieces.flat[p];
+                let pts: Vec<[f64; 2]> = (0..m).map(|k| f.pts[k * stride]).collect();
+                let arc_mid = (0..m).map(|k| if stride == 1 { f.arc_mid[k] } else { f.pts[k * stride + stride / 2] }).collect();
+                super::seam::FlatPiece { pts, arc_mid, area: f.area, perimeter: f.perimeter }
+            });
+            SeamPieces { n: m, flat }
+        })
+        .collect();
+    let mut steps = (0usize, 0usize);
+    let quick = Patience { cap: QUICK.cap.min(cap), ..QUICK };
+    let mut best = ladder(&samples, &levels, quick, &mut steps).ok()?;
+    if !best.as_ref().is_some_and(|b| b.3) && steps.0 < cap {
+        best = ladder(&samples, &levels, Patience { cap, ..PATIENT }, &mut steps).ok()?;
+    }
+    let (x, tri, converged, good) = best?;
+    (converged && good).then_some(Solution { x, tri, iterations: steps.0, flips: steps.1, converged })
+}

@@ -1,0 +1,182 @@
+//! The sheet path: a pair with a non-convex piece, solved as two inextensible elastic sheets.
+//!
+//! For convex pieces the glued surface is Alexandrov's unique convex polyhedron, and the convex
+//! path finds it exactly with seam vertices only. A non-convex piece has no such theorem: the
+//! physical D-form is the equilibrium of two elastic sheets glued edge to edge that (almost) do
+//! not stretch and bend as little as they can, and its bending is no longer all on the seam.
+//!
+//! *Why interior vertices.* The seam-vertex polyhedron of a developable surface has the quads
+//! between consecutive rulings planar, so each of their diagonals is an infinitesimal flex:
+//! the length equations are singular exactly where the sheet is developable, and only the
+//! convexity that the convex path enforces picks the right shape there. (Solving the exact
+//! seam-vertex equations on rulings fitted to a relaxed sheet, tried at stop 18 and again
+//! here, ends folded through itself.) So each flat piece is meshed with interior vertices
+//! ([`flatmesh`]) and the glued mesh ([`glued`]) is relaxed as a discrete elastic shell
+//! ([`shell`]: membrane + dihedral bending, Grinspun, Hirani, Desbrun & Schröder, "Discrete
+//! shells", SCA 2003), whose bending energy settles those flexes.
+//!
+//! *Path.* Started from a far-off shape, a thick sheet's equilibrium is strained by tens of
+//! percent, and thinning it compresses the pieces into wrinkles; started thin, a sheet crumples
+//! (Surface Evolver does the same). So the sheet follows a homotopy ([`homotopy`]) from convex
+//! twins of the pieces (same seam edge lengths, so the same gluing), whose D-form the convex
+//! path solves exactly, to the real pieces, at the moderate bending weight
+//! [`HOMOTOPY_KB`]; then it is thinned through [`SCHEDULE`] (the continuation of Surface
+//! Evolver's elastic-sheet runs) and the answer is the thickest stage within [`STRAIN_TARGET`]
+//! and sound: the least-bending equilibrium the path finds that meets the promise. When no twin
+//! can be solved, the start is the convex path's own approximation ([`start`]).
+//!
+//! - [`flatmesh`]: each piece meshed by constrained Delaunay refinement, seam samples kept;
+//! - [`glued`]: the two meshes glued on the seam, and the shell's terms on them;
+//! - [`hinge`]: the dihedral angle of two triangles and its gradient;
+//! - [`shell`]: the energy and its Levenberg–Marquardt minimization;
+//! - [`morph`], [`tutte`], [`homotopy`]: the convex twins, the meshes carried onto them, and the
+//!   homotopy of the metric back to the pieces;
+//! - [`start`]: a polyhedron's shape carried onto the finer mesh;
+//! - [`finish`]: soundness (folds, crossings), the result as a [`crate::simulate::Simulation`]
+//!   and its stats.
+
+pub mod finish;
+pub mod flatmesh;
+pub mod glued;
+pub mod hinge;
+pub mod homotopy;
+pub mod morph;
+pub mod shell;
+pub mod start;
+pub mod tutte;
+
+use super::mesh::Solution;
+use super::seam::SeamPieces;
+use super::vec3::V3;
+use super::Simulation;
+pub use glued::SheetMesh;
+use shell::Shell;
+
+/// Interior edge length of the meshes, in seam steps (`L/N`): the triangles grow from the seam
+/// step at the boundary to about this inside. At 2.5 the Pebble with a circle has 3,078
+/// vertices and takes 10 s native; at 6, 1,155 vertices, 0.8 s, and its volume moves by 0.05 %.
+pub const INTERIOR_SPACING: f64 = 6.0;
+
+/// The thinning's bending weights, as `kb / R²` (`R = L/2π`, the radius of a circle of the
+/// seam's length): `√kb / R` is about the sheet's relative thickness. The strain falls about
+/// as `kb^0.4`; at 256 seam vertices the organic pairs reach 1e-3 between 3e-7 and 3e-8.
+pub const SCHEDULE: [f64; 6] = [1e-5, 3e-6, 1e-6, 3e-7, 1e-7, 3e-8];
+
+/// Homotopy steps from the convex twins, and the bending weight (`kb/R²`) the sheet follows
+/// them at: thin enough that the strain stays at a few percent, thick enough to stay smooth.
+/// Each intermediate step gets [`HOMOTOPY_STAGE_STEPS`] steps and ends at a relative energy drop
+/// of [`HOMOTOPY_RTOL`]. 8 fully converged steps end in the same equilibria (Pebble, kidney, blob
+/// and L with a circle, 256 seam vertices) as 4 loose ones, in 2.3× the time.
+pub const HOMOTOPY_STEPS: usize = 4;
+pub const HOMOTOPY_KB: f64 = 1e-5;
+pub const HOMOTOPY_STAGE_STEPS: usize = 20;
+pub const HOMOTOPY_RTOL: f64 = 1e-3;
+
+/// Shares of a circle's turning in the convex twins, tried in order ([`morph::Morph`]).
+pub const TWIN_CIRCLE_SHARES: [f64; 3] = [0.25, 0.5, 0.75];
+
+/// Step budget of the convex path when it only gives the sheet path its fallback start, and of
+/// the twins' convex solve.
+pub const START_BUDGET: usize = 1500;
+
+/// Largest edge strain of an answer that counts as inextensible (requirement 1 of issue 14).
+pub const STRAIN_TARGET: f64 = 1e-3;
+
+/// Levenberg–Marquardt steps per stage, and the relative energy drop that ends a stage.
+pub const STAGE_STEPS: usize = 60;
+pub const STAGE_RTOL: f64 = 1e-7;
+
+/// What a relaxation did.
+#[derive(Debug, Clone)]
+pub struct Relaxed {
+    pub x: Vec<V3>,
+    pub steps: usize,
+    /// The bending weight (`kb/R²`) of the stage the answer comes from.
+    pub stage: f64,
+    pub max_strain: f64,
+    /// Within [`STRAIN_TARGET`] and sound.
+    pub converged: bool,
+}
+
+/// Thins the sheet from `x` through the bending weights `schedule`, stopping at the first
+/// (thickest) stage whose equilibrium is within [`STRAIN_TARGET`] and sound, within `budget`
+/// steps in all.
+pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, schedule: &[f64], faces: &[[usize; 3]]) -> Relaxed {
+    let mut steps = 0;
+    let mut lambda: f64 = 1e-3;
+    let mut out = Relaxed { x: x.clone(), steps: 0, stage: schedule.first().copied().unwrap_or(0.0), max_strain: shell.max_strain(&x), converged: false };
+    for &beta in schedule {
+        let left = budget.saturating_sub(steps);
+        if left == 0 {
+            break;
+        }
+        lambda = lambda.min(1e-3);
+        let run = shell.minimize(&mut x, beta * radius * radius, STAGE_STEPS.min(left), STAGE_RTOL, &mut lambda);
+        steps += run.steps;
+        let strain = shell.max_strain(&x);
+        let converged = strain <= STRAIN_TARGET && finish::sound(&x, shell, faces);
+        out = Relaxed { x: x.clone(), steps, stage: beta, max_strain: strain, converged };
+        if converged {
+            break;
+        }
+    }
+    out
+}
+
+/// The homotopy from convex twins ([`homotopy`]), then the thinning. `None` when no twin pair
+/// can be built and solved.
+pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, budget: usize) -> Option<(Shell, Relaxed)> {
+    // The twins: each piece's own bulges with a quarter of a circle's turning mixed in, or
+    // rounder ones when those cannot be solved. Starting from the convex path's approximation of
+    // twins it could not solve did worse than the fallback start (the five-lobed shape with a
+    // circle ended with crossing sheets), and so did smooth outlines through the twins solved
+    // as curves (other equilibria at 128 and 256 seam vertices, 2 % apart).
+    let (h, twin, sol) = TWIN_CIRCLE_SHARES.iter().find_map(|&share| {
+        let h = homotopy::Homotopy::new(pieces, mesh, share)?;
+        let twin = h.twin_pieces(pieces);
+        let sol = super::convex::solve_samples(&twin, START_BUDGET)?;
+        Some((h, twin, sol))
+    })?;
+    let twin_flat = h.twin_flat();
+    let mut x = start::lift_onto([&twin.flat[0].pts, &twin.flat[1].pts], &sol, mesh, &twin_flat);
+    let mut shell = mesh.shell();
+    let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
+    let mut lambda: f64 = 1e-3;
+    let mut steps = sol.iterations;
+    for k in 1..=HOMOTOPY_STEPS {
+        let t = k as f64 / HOMOTOPY_STEPS as f64;
+        shell.set_rest_blend(&twin_flat, &mesh.flat, t);
+        lambda = lambda.min(1e-3);
+        // The way there is only followed; the last step's equilibrium is the one thinned.
+        let (rt, st) = if k == HOMOTOPY_STEPS { (STAGE_RTOL, STAGE_STEPS) } else { (HOMOTOPY_RTOL, HOMOTOPY_STAGE_STEPS) };
+        steps += shell.minimize(&mut x, HOMOTOPY_KB * radius * radius, st, rt, &mut lambda).steps;
+    }
+    let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
+    let thinner: Vec<f64> = SCHEDULE.iter().copied().filter(|&b| b < HOMOTOPY_KB).collect();
+    let mut relaxed = thin(&mut shell, x, radius, budget.saturating_sub(steps), &thinner, &faces);
+    relaxed.steps += steps;
+    Some((shell, relaxed))
+}
+
+/// The sheet path for a pair with a non-convex piece, given the convex path's answer `seam` on
+/// the same samples (the fallback start, and the answer kept when the sheet does worse). `None`
+/// when a piece cannot be meshed; then the caller keeps `seam`.
+pub fn simulate(pieces: &SeamPieces, seam: &Solution, seam_strain: f64, budget: usize) -> Option<Simulation> {
+    let mesh = SheetMesh::new(pieces, INTERIOR_SPACING)?;
+    let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
+    let (shell, relaxed) = match follow(pieces, &mesh, budget) {
+        Some(r) => r,
+        None => {
+            let mut shell = mesh.shell();
+            let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
+            let r = thin(&mut shell, start::lift(pieces, seam, &mesh), radius, budget, &SCHEDULE, &faces);
+            (shell, r)
+        }
+    };
+    // An unconverged sheet more strained than the seam-vertex answer (a start folded through
+    // itself) is not a better approximation of the form.
+    if !relaxed.converged && relaxed.max_strain > seam_strain {
+        return None;
+    }
+    Some(finish::simulation(pieces, &mesh, &shell, &relaxed.x, seam.iterations + relaxed.steps, relaxed.converged))
+}

@@ -1,0 +1,245 @@
+//! A discrete elastic shell: membrane and bending energies of a triangle mesh whose rest shape is
+//! flat, minimized by Levenberg–Marquardt.
+//!
+//! Energy (Grinspun, Hirani, Desbrun & Schröder, "Discrete shells", SCA 2003), as a sum of
+//! squared residuals so that Gauss–Newton applies:
+//!
+//! * membrane, one residual per edge and piece: `r = |x_i − x_j| − L` (`L` the edge's flat
+//!   length in that piece), i.e. `L²·ε²` for the strain ε — a seam edge has one residual per
+//!   piece, with its own flat length in each;
+//! * bending, one residual per interior edge of a piece: `r = √(kb · 3L²/(A₁ + A₂)) · θ`, with θ
+//!   the hinge's dihedral angle ([`super::hinge`]), `A₁, A₂` the flat areas of its triangles.
+//!   The rest angle is 0 (the pieces are cut flat); the seam has no bending term (it is a free
+//!   hinge: the two pieces meet there at whatever angle the equilibrium gives).
+//!
+//! Both terms scale like an area, so `kb` is a squared length, independent of the mesh: the
+//! bending of a curvature κ costs about `kb·κ²` per unit area against `ε²` for a strain ε, so
+//! `√kb` plays the sheet's thickness (up to a constant). Lowering `kb` from a thick to a thin
+//! sheet is the continuation towards zero stretch of Surface Evolver's elastic-sheet runs.
+//!
+//! Each Gauss–Newton step solves `(JᵀJ + λ·μ I) Δ = −Jᵀr` with the block LDLᵀ of
+//! [`crate::simulate::normal`]; its pattern holds the mesh edges and the two tips of every
+//! hinge (the only pair of a hinge's four vertices that is not an edge).
+
+use super::hinge::angle_and_gradient;
+use crate::simulate::normal::NormalEquations;
+use crate::simulate::vec3::{norm, sub, V3};
+use crate::order::pair_key;
+use crate::simulate::metric::KeyMap;
+
+type B3 = [[f64; 3]; 3];
+
+/// One membrane term: vertices and flat length.
+#[derive(Debug, Clone, Copy)]
+pub struct Edge {
+    pub i: usize,
+    pub j: usize,
+    pub rest: f64,
+    /// The piece whose flat length `rest` is.
+    pub piece: u8,
+}
+
+/// One bending term: hinge `(i, j, k, l)` (edge i→j, tips k and l) and its weight `3L²/(A₁+A₂)`.
+#[derive(Debug, Clone, Copy)]
+pub struct Hinge {
+    pub v: [usize; 4],
+    pub weight: f64,
+}
+
+/// The shell's terms and the reusable sparse pattern of its normal equations.
+pub struct Shell {
+    pub n: usize,
+    pub edges: Vec<Edge>,
+    pub hinges: Vec<Hinge>,
+    ne: NormalEquations,
+    /// The pattern's pairs, and for each term the pair slots of its vertex pairs.
+    pairs: Vec<(usize, usize)>,
+    edge_slot: Vec<usize>,
+    hinge_slots: Vec<[usize; 6]>,
+}
+
+/// The pairs of a hinge's four vertices, in the order of [`Shell::hinge_slots`].
+const HINGE_PAIRS: [(usize, usize); 6] = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+
+/// Accepted steps on one factorization.
+pub const REUSE: usize = 4;
+
+/// How a Levenberg–Marquardt run ended.
+#[derive(Debug, Clone, Copy)]
+pub struct Run {
+    pub steps: usize,
+    pub factorizations: usize,
+    pub cost: f64,
+}
+
+impl Shell {
+    pub fn new(n: usize, edges: Vec<Edge>, hinges: Vec<Hinge>) -> Self {
+        let mut slot = KeyMap::default();
+        let mut pairs = Vec::new();
+        let mut key = |a: usize, b: usize, pairs: &mut Vec<(usize, usize)>| {
+            let k = (a.min(b), a.max(b));
+            *slot.entry(pair_key(k.0, k.1)).or_insert_with(|| {
+                pairs.push(k);
+                pairs.len() - 1
+            })
+        };
+        let edge_slot = edges.iter().map(|e| key(e.i, e.j, &mut pairs)).collect();
+        let hinge_slots = hinges.iter().map(|h| HINGE_PAIRS.map(|(a, b)| key(h.v[a], h.v[b], &mut pairs))).collect();
+        let ne = NormalEquations::new(n, &pairs);
+        Shell { n, edges, hinges, ne, pairs, edge_slot, hinge_slots }
+    }
+
+    /// Sets every edge's rest length to the blend `(1 − t)·L⁰ + t·L¹` of its lengths in the flat
+    /// positions `from` and `to`: a homotopy of the metric that never needs an intermediate flat
+    /// layout (a blend of two layouts can fold over where the two differ much).
+    pub fn set_rest_blend(&mut self, from: &[Vec<[f64; 2]>; 2], to: &[Vec<[f64; 2]>; 2], t: f64) {
+        for e in &mut self.edges {
+            let len = |f: &[Vec<[f64; 2]>; 2]| {
+                let f = &f[e.piece as usize];
+                (f[e.i][0] - f[e.j][0]).hypot(f[e.i][1] - f[e.j][1])
+            };
+            e.rest = (1.0 - t) * len(from) + t * len(to);
+        }
+    }
+
+    /// Blocks of the normal equations' factor.
+    pub fn factor_blocks(&self) -> usize {
+        self.ne.factor_blocks()
+    }
+
+    /// The energy at `x` for bending weight `kb`.
+    pub fn cost(&self, x: &[V3], kb: f64) -> f64 {
+        let m: f64 = self.edges.iter().map(|e| (norm(sub(x[e.j], x[e.i])) - e.rest).powi(2)).sum();
+        if kb == 0.0 {
+            return m;
+        }
+        let b: f64 = self
+            .hinges
+            .iter()
+            .map(|h| {
+                let t = super::hinge::angle(x[h.v[0]], x[h.v[1]], x[h.v[2]], x[h.v[3]]);
+                kb * h.weight * t * t
+            })
+            .sum();
+        m + b
+    }
+
+    /// Largest relative strain `| |x_i − x_j| / L − 1 |` over the membrane terms.
+    pub fn max_strain(&self, x: &[V3]) -> f64 {
+        self.edges.iter().map(|e| (norm(sub(x[e.j], x[e.i])) / e.rest - 1.0).abs()).fold(0.0, f64::max)
+    }
+
+    /// `Jᵀr` at `x`, and `JᵀJ`'s diagonal and pair blocks when `blocks` is given.
+    fn assemble(&self, x: &[V3], kb: f64, mut blocks: Option<(&mut [B3], &mut [B3])>) -> Vec<f64> {
+        let mut g = vec![0.0; 3 * self.n];
+        let pairs = &self.pairs;
+        let mut add = |vs: &[usize], rows: &[V3], slots: &[usize], pair_of: &[(usize, usize)], r: f64| {
+            for (&v, row) in vs.iter().zip(rows) {
+                for a in 0..3 {
+                    g[3 * v + a] += row[a] * r;
+                }
+            }
+            let Some((diag, off)) = blocks.as_mut() else { return };
+            for (&v, row) in vs.iter().zip(rows) {
+                for a in 0..3 {
+                    for c in 0..3 {
+                        diag[v][a][c] += row[a] * row[c];
+                    }
+                }
+            }
+            for (&s, &(p, q)) in slots.iter().zip(pair_of) {
+                // The stored pair is (min, max), its block has the rows of its first vertex.
+                let (ra, rb) = if pairs[s].0 == vs[p] { (rows[p], rows[q]) } else { (rows[q], rows[p]) };
+                for a in 0..3 {
+                    for c in 0..3 {
+                        off[s][a][c] += ra[a] * rb[c];
+                    }
+                }
+            }
+        };
+        for (e, &s) in self.edges.iter().zip(&self.edge_slot) {
+            let d = sub(x[e.j], x[e.i]);
+            let l = norm(d);
+            let u = if l > 0.0 { d.map(|v| v / l) } else { [1.0, 0.0, 0.0] };
+            add(&[e.i, e.j], &[u.map(|v| -v), u], &[s], &[(0, 1)], l - e.rest);
+        }
+        if kb > 0.0 {
+            for (h, slots) in self.hinges.iter().zip(&self.hinge_slots) {
+                let [i, j, k, l] = h.v;
+                let Some((theta, grad)) = angle_and_gradient(x[i], x[j], x[k], x[l]) else { continue };
+                let w = (kb * h.weight).sqrt();
+                add(&h.v, &grad.map(|row| row.map(|v| w * v)), slots, &HINGE_PAIRS, w * theta);
+            }
+        }
+        g
+    }
+
+    /// A damped Gauss–Newton step `−(JᵀJ + λμI)⁻¹ Jᵀr`, freshly factored or (`reuse`) with the
+    /// last factorization and the new gradient; `None` if the factorization fails.
+    fn step(&mut self, x: &[V3], kb: f64, lambda: f64, reuse: bool) -> Option<Vec<f64>> {
+        if reuse {
+            let g = self.assemble(x, kb, None);
+            return self.ne.resolve(&g);
+        }
+        let mut diag = vec![[[0.0; 3]; 3]; self.n];
+        let mut off = vec![[[0.0; 3]; 3]; self.pairs.len()];
+        let g = self.assemble(x, kb, Some((&mut diag, &mut off)));
+        self.ne.solve_blocks(&diag, &off, &g, lambda)
+    }
+
+    /// Minimizes the energy for bending weight `kb` from `x` by Levenberg–Marquardt (Nocedal &
+    /// Wright, "Numerical Optimization", §10.3), at most `budget` steps. A factorization is
+    /// reused for up to [`REUSE`] accepted steps (the matrix changes slowly near an
+    /// equilibrium, and a back-substitution costs a small fraction of a factorization); a step
+    /// that fails on an old factor is retried on a fresh one before λ is raised. Ends when a
+    /// freshly factored, lightly damped step lowers the energy by less than `rtol` of it.
+    /// `lambda` carries the damping from one call to the next.
+    pub fn minimize(&mut self, x: &mut [V3], kb: f64, budget: usize, rtol: f64, lambda: &mut f64) -> Run {
+        let mut cost = self.cost(x, kb);
+        let (mut steps, mut factorizations, mut age) = (0, 0, usize::MAX);
+        while steps < budget {
+            steps += 1;
+            let reuse = age < REUSE;
+            if !reuse {
+                factorizations += 1;
+            }
+            let Some(d) = self.step(x, kb, *lambda, reuse) else {
+                if reuse {
+                    age = usize::MAX;
+                    continue;
+                }
+                *lambda *= 10.0;
+                if *lambda > 1e12 {
+                    break;
+                }
+                continue;
+            };
+            let trial: Vec<V3> = x.iter().enumerate().map(|(v, p)| [0, 1, 2].map(|a| p[a] + d[3 * v + a])).collect();
+            let c = self.cost(&trial, kb);
+            if c.is_finite() && c < cost {
+                let drop = cost - c;
+                x.copy_from_slice(&trial);
+                cost = c;
+                // A small drop under heavy damping, or on an old factor, is a short step, not an
+                // equilibrium.
+                if !reuse && *lambda <= 1e-2 && drop <= rtol * cost {
+                    break;
+                }
+                if reuse {
+                    age += 1;
+                } else {
+                    *lambda = (*lambda / 3.0).max(1e-12);
+                    age = 1;
+                }
+            } else if reuse {
+                age = usize::MAX;
+            } else {
+                *lambda *= 4.0;
+                if *lambda > 1e12 {
+                    break;
+                }
+            }
+        }
+        Run { steps, factorizations, cost }
+    }
+}
