@@ -40,3 +40,37 @@ export function meshArea(triangles) {
   }
   return area;
 }
+
+/**
+ * The largest bend (radians: 0 flat, π folded back) across an edge shared by two triangles of the
+ * same `g` group of an OBJ file (the panel writes one group per piece): a fold inside a piece,
+ * which the pieces cannot take, unlike the seam between the groups.
+ */
+export function maxBendInsidePieces(text) {
+  const v = [];
+  const faces = [];
+  let group = '';
+  for (const line of text.split('\n')) {
+    const p = line.trim().split(/\s+/);
+    if (p[0] === 'v') v.push(p.slice(1, 4).map(Number));
+    if (p[0] === 'g') group = p[1];
+    if (p[0] === 'f') faces.push({ f: p.slice(1, 4).map((x) => Number(x.split('/')[0]) - 1), group });
+  }
+  const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  const normal = ({ f }) => cross(sub(v[f[1]], v[f[0]]), sub(v[f[2]], v[f[0]]));
+  const owner = new Map();
+  let worst = 0;
+  faces.forEach((face, t) => {
+    for (let m = 0; m < 3; m++) {
+      const i = face.f[m], j = face.f[(m + 1) % 3];
+      const u = owner.get(`${j},${i}`);
+      if (u === undefined) { owner.set(`${i},${j}`, t); continue; }
+      if (faces[u].group !== face.group) continue;
+      const n1 = normal(faces[u]), n2 = normal(face);
+      const c = cross(n1, n2);
+      worst = Math.max(worst, Math.atan2(Math.hypot(...c), n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2]));
+    }
+  });
+  return worst;
+}
