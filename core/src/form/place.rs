@@ -15,7 +15,7 @@
 //! clamped to that triangle, so the answer is always on the surface.
 
 /// Barycentric coordinates of `p` in the triangle `t` (`None` when `t` has no area).
-fn barycentric(t: &[[f64; 2]; 3], p: [f64; 2]) -> Option<[f64; 3]> {
+pub(crate) fn barycentric(t: &[[f64; 2]; 3], p: [f64; 2]) -> Option<[f64; 3]> {
     let [a, b, c] = *t;
     let det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
     if det == 0.0 || !det.is_finite() {

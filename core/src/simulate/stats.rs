@@ -40,9 +40,23 @@ pub struct Stats {
 
 
 /// Angle at `a` in triangle (a, b, c), robust near 0 and π.
-pub(crate) fn angle(a: V3, b: V3, c: V3) -> f64 {
+fn angle(a: V3, b: V3, c: V3) -> f64 {
     let (u, v) = (sub(b, a), sub(c, a));
     norm(cross(u, v)).atan2(dot(u, v))
+}
+
+/// The surface area of `triangles` and, for every vertex of `x`, the sum of its triangles'
+/// angles there (2π minus it is the vertex's angle defect, its discrete Gaussian curvature).
+pub(crate) fn area_and_angle_sums(x: &[V3], triangles: &[[usize; 3]]) -> (f64, Vec<f64>) {
+    let mut angle_sum = vec![0.0; x.len()];
+    let mut area = 0.0;
+    for &[a, b, c] in triangles {
+        area += norm(cross(sub(x[b], x[a]), sub(x[c], x[a]))) / 2.0;
+        angle_sum[a] += angle(x[a], x[b], x[c]);
+        angle_sum[b] += angle(x[b], x[c], x[a]);
+        angle_sum[c] += angle(x[c], x[a], x[b]);
+    }
+    (area, angle_sum)
 }
 
 /// Builds the output mesh and measures it.
@@ -99,14 +113,7 @@ pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
         }
     }
 
-    let mut angle_sum = vec![0.0; n];
-    let mut area = 0.0;
-    for &[a, b, c] in &triangles {
-        area += norm(cross(sub(x[b], x[a]), sub(x[c], x[a]))) / 2.0;
-        angle_sum[a] += angle(x[a], x[b], x[c]);
-        angle_sum[b] += angle(x[b], x[c], x[a]);
-        angle_sum[c] += angle(x[c], x[a], x[b]);
-    }
+    let (area, angle_sum) = area_and_angle_sums(&x, &triangles);
     let flat_area = pieces.flat[0].area + pieces.flat[1].area;
     // Vertices 0..n are the seam; any further vertex would be interior (this mesh has none).
     let defect = |v: usize| (TAU - angle_sum[v]).abs();

@@ -9,7 +9,7 @@ use crate::simulate::checks::{faces_cross, FOLD_BEND};
 use crate::order::pair_key;
 use crate::simulate::metric::KeyMap;
 use crate::simulate::seam::SeamPieces;
-use crate::simulate::stats::{angle, Stats, REFLEX_REPORT};
+use crate::simulate::stats::{area_and_angle_sums, Stats, REFLEX_REPORT};
 use crate::simulate::vec3::{cross, dot, map_affine, norm, sub, V3};
 use crate::simulate::Simulation;
 use std::f64::consts::TAU;
@@ -87,14 +87,7 @@ pub fn simulation(pieces: &SeamPieces, mesh: &SheetMesh, shell: &Shell, x: &[V3]
         }
     }
 
-    let mut angle_sum = vec![0.0; x.len()];
-    let mut area = 0.0;
-    for &[a, b, c] in &triangles {
-        area += norm(cross(sub(x[b], x[a]), sub(x[c], x[a]))) / 2.0;
-        angle_sum[a] += angle(x[a], x[b], x[c]);
-        angle_sum[b] += angle(x[b], x[c], x[a]);
-        angle_sum[c] += angle(x[c], x[a], x[b]);
-    }
+    let (area, angle_sum) = area_and_angle_sums(&x, &triangles);
     let defect = |v: usize| (TAU - angle_sum[v]).abs();
     let flat_area = pieces.flat[0].area + pieces.flat[1].area;
     let reflex_edges = shell

@@ -6,20 +6,10 @@
 //! smooth the creases out.
 
 use super::glued::SheetMesh;
+use crate::form::place::barycentric;
 use crate::simulate::mesh::Solution;
 use crate::simulate::seam::SeamPieces;
 use crate::simulate::vec3::{map_affine, V3};
-
-/// Barycentric coordinates of `q` in flat triangle `(a, b, c)`, or `None` when degenerate.
-fn barycentric(a: [f64; 2], b: [f64; 2], c: [f64; 2], q: [f64; 2]) -> Option<[f64; 3]> {
-    let det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    if det == 0.0 || !det.is_finite() {
-        return None;
-    }
-    let u = ((q[0] - a[0]) * (c[1] - a[1]) - (q[1] - a[1]) * (c[0] - a[0])) / det;
-    let v = ((b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])) / det;
-    Some([1.0 - u - v, u, v])
-}
 
 /// The starting positions of every vertex of `mesh` (see the module docs).
 pub fn lift(pieces: &SeamPieces, start: &Solution, mesh: &SheetMesh) -> Vec<V3> {
@@ -46,7 +36,7 @@ pub fn lift_onto(polygons: [&[[f64; 2]]; 2], start: &Solution, mesh: &SheetMesh,
             // largest (≥ 0 inside; a point on a chord is in either neighbour).
             let best = tris
                 .iter()
-                .filter_map(|t| barycentric(f[t[0]], f[t[1]], f[t[2]], q).map(|b| (b[0].min(b[1]).min(b[2]), t)))
+                .filter_map(|t| barycentric(&[f[t[0]], f[t[1]], f[t[2]]], q).map(|b| (b[0].min(b[1]).min(b[2]), t)))
                 .max_by(|a, b| a.0.total_cmp(&b.0));
             if let Some((_, t)) = best {
                 let tf = [f[t[0]], f[t[1]], f[t[2]]];
