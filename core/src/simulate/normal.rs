@@ -239,11 +239,6 @@ impl NormalEquations {
         d.iter().all(|v| v.is_finite()).then_some(d)
     }
 
-    /// Blocks of the factor `L` (its fill; the bench prints it).
-    pub fn factor_blocks(&self) -> usize {
-        self.lp[self.n]
-    }
-
     /// Solves `(M + λ·μ I) Δ = −g` for a matrix given by its blocks: `diag[v]` the diagonal
     /// block of vertex `v`, `off[p]` the block (rows of `a`, columns of `b`) of pair `p = (a, b)`
     /// in the order given to [`NormalEquations::new`]. This is the general form of

@@ -91,8 +91,6 @@ pub const STAGE_RTOL: f64 = 1e-7;
 pub struct Relaxed {
     pub x: Vec<V3>,
     pub steps: usize,
-    /// The bending weight (`kb/R²`) of the stage the answer comes from.
-    pub stage: f64,
     pub max_strain: f64,
     /// Within [`STRAIN_TARGET`] and sound.
     pub converged: bool,
@@ -104,18 +102,17 @@ pub struct Relaxed {
 pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, schedule: &[f64], faces: &[[usize; 3]]) -> Relaxed {
     let mut steps = 0;
     let mut lambda: f64 = 1e-3;
-    let mut out = Relaxed { x: x.clone(), steps: 0, stage: schedule.first().copied().unwrap_or(0.0), max_strain: shell.max_strain(&x), converged: false };
+    let mut out = Relaxed { x: x.clone(), steps: 0, max_strain: shell.max_strain(&x), converged: false };
     for &beta in schedule {
         let left = budget.saturating_sub(steps);
         if left == 0 {
             break;
         }
         lambda = lambda.min(1e-3);
-        let run = shell.minimize(&mut x, beta * radius * radius, STAGE_STEPS.min(left), STAGE_RTOL, &mut lambda);
-        steps += run.steps;
+        steps += shell.minimize(&mut x, beta * radius * radius, STAGE_STEPS.min(left), STAGE_RTOL, &mut lambda);
         let strain = shell.max_strain(&x);
         let converged = strain <= STRAIN_TARGET && finish::sound(&x, shell, faces);
-        out = Relaxed { x: x.clone(), steps, stage: beta, max_strain: strain, converged };
+        out = Relaxed { x: x.clone(), steps, max_strain: strain, converged };
         if converged {
             break;
         }
@@ -149,7 +146,7 @@ pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, budget: usize) -> Option<(S
         lambda = lambda.min(1e-3);
         // The way there is only followed; the last step's equilibrium is the one thinned.
         let (rt, st) = if k == HOMOTOPY_STEPS { (STAGE_RTOL, STAGE_STEPS) } else { (HOMOTOPY_RTOL, HOMOTOPY_STAGE_STEPS) };
-        steps += shell.minimize(&mut x, HOMOTOPY_KB * radius * radius, st, rt, &mut lambda).steps;
+        steps += shell.minimize(&mut x, HOMOTOPY_KB * radius * radius, st, rt, &mut lambda);
     }
     let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
     let thinner: Vec<f64> = SCHEDULE.iter().copied().filter(|&b| b < HOMOTOPY_KB).collect();

@@ -64,14 +64,6 @@ const HINGE_PAIRS: [(usize, usize); 6] = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3)
 /// Accepted steps on one factorization.
 pub const REUSE: usize = 4;
 
-/// How a Levenberg–Marquardt run ended.
-#[derive(Debug, Clone, Copy)]
-pub struct Run {
-    pub steps: usize,
-    pub factorizations: usize,
-    pub cost: f64,
-}
-
 impl Shell {
     pub fn new(n: usize, edges: Vec<Edge>, hinges: Vec<Hinge>) -> Self {
         let mut slot = KeyMap::default();
@@ -100,11 +92,6 @@ impl Shell {
             };
             e.rest = (1.0 - t) * len(from) + t * len(to);
         }
-    }
-
-    /// Blocks of the normal equations' factor.
-    pub fn factor_blocks(&self) -> usize {
-        self.ne.factor_blocks()
     }
 
     /// The energy at `x` for bending weight `kb`.
@@ -193,16 +180,13 @@ impl Shell {
     /// equilibrium, and a back-substitution costs a small fraction of a factorization); a step
     /// that fails on an old factor is retried on a fresh one before λ is raised. Ends when a
     /// freshly factored, lightly damped step lowers the energy by less than `rtol` of it.
-    /// `lambda` carries the damping from one call to the next.
-    pub fn minimize(&mut self, x: &mut [V3], kb: f64, budget: usize, rtol: f64, lambda: &mut f64) -> Run {
+    /// `lambda` carries the damping from one call to the next. Returns the steps taken.
+    pub fn minimize(&mut self, x: &mut [V3], kb: f64, budget: usize, rtol: f64, lambda: &mut f64) -> usize {
         let mut cost = self.cost(x, kb);
-        let (mut steps, mut factorizations, mut age) = (0, 0, usize::MAX);
+        let (mut steps, mut age) = (0, usize::MAX);
         while steps < budget {
             steps += 1;
             let reuse = age < REUSE;
-            if !reuse {
-                factorizations += 1;
-            }
             let Some(d) = self.step(x, kb, *lambda, reuse) else {
                 if reuse {
                     age = usize::MAX;
@@ -240,6 +224,6 @@ impl Shell {
                 }
             }
         }
-        Run { steps, factorizations, cost }
+        steps
     }
 }
