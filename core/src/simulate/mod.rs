@@ -62,7 +62,7 @@
 //! from convex twins of the pieces and thinned until every edge is within 1e-3 of its flat
 //! length; `converged` then also says the mesh is unfolded (no bend above 90° inside a piece)
 //! and free of self-intersections. Its vertices are the seam's first, then the interior ones.
-
+//!
 //! ## Files
 //! - [`options`]: user options and their checks; [`seam`]: the two sampled pieces;
 //!   [`metric`]: chord triangulations of a flat polygon and flips;

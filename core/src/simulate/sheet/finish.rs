@@ -10,7 +10,7 @@ use crate::order::pair_key;
 use crate::simulate::metric::KeyMap;
 use crate::simulate::seam::SeamPieces;
 use crate::simulate::stats::{area_and_angle_sums, Stats, REFLEX_REPORT};
-use crate::simulate::vec3::{cross, dot, map_affine, norm, sub, V3};
+use crate::simulate::vec3::{centroid, cross, dot, map_affine, norm, sub, V3};
 use crate::simulate::Simulation;
 use std::f64::consts::TAU;
 
@@ -35,7 +35,7 @@ pub fn sound(x: &[V3], shell: &Shell, faces: &[[usize; 3]]) -> bool {
 /// their flat corners in the input's coordinates (B's samples un-mirrored), and the stats.
 pub fn simulation(pieces: &SeamPieces, mesh: &SheetMesh, shell: &Shell, x: &[V3], iterations: usize, converged: bool) -> Simulation {
     let n = mesh.n;
-    let c = x.iter().fold([0.0; 3], |s, p| [s[0] + p[0], s[1] + p[1], s[2] + p[2]]).map(|v| v / x.len() as f64);
+    let c = centroid(x);
     let mut x: Vec<V3> = x.iter().map(|p| sub(*p, c)).collect();
     let all: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
     if signed_volume(&x, &all) < 0.0 {

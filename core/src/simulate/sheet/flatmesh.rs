@@ -103,7 +103,7 @@ impl FlatMesh {
 }
 
 /// Area of a counter-clockwise polygon (shoelace).
-fn polygon_area(p: &[[f64; 2]]) -> f64 {
+pub(crate) fn polygon_area(p: &[[f64; 2]]) -> f64 {
     let n = p.len();
     (0..n).map(|k| p[k][0] * p[(k + 1) % n][1] - p[(k + 1) % n][0] * p[k][1]).sum::<f64>() / 2.0
 }

@@ -28,7 +28,7 @@ impl SheetMesh {
         let meshes: [FlatMesh; 2] = [mesh_piece(&pieces.flat[0].pts, max_area)?, mesh_piece(&pieces.flat[1].pts, max_area)?];
         let ia = meshes[0].pts.len() - n;
         let total = n + ia + meshes[1].pts.len() - n;
-        let global = |p: usize, v: usize| if v < n { v } else if p == 0 { v } else { v + ia };
+        let global = |p: usize, v: usize| if p == 0 || v < n { v } else { v + ia };
         let mut faces: [Vec<[usize; 3]>; 2] = [Vec::new(), Vec::new()];
         let mut flat = [vec![[f64::NAN; 2]; total], vec![[f64::NAN; 2]; total]];
         for (p, m) in meshes.iter().enumerate() {

@@ -14,6 +14,7 @@
 //! strained by up to 70 %), the thick sheet's equilibrium is strained by up to 50 %, and
 //! thinning it compresses the pieces into wrinkles.
 
+use super::flatmesh::polygon_area;
 use super::morph::Morph;
 use super::tutte::embed;
 use super::glued::SheetMesh;
@@ -50,7 +51,7 @@ impl Homotopy {
                 let (a, b) = (pts[k], pts[(k + 1) % n]);
                 [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0]
             }).collect();
-            let area = (0..n).map(|k| pts[k][0] * pts[(k + 1) % n][1] - pts[(k + 1) % n][0] * pts[k][1]).sum::<f64>() / 2.0;
+            let area = polygon_area(&pts);
             FlatPiece { pts, arc_mid, area, perimeter: pieces.flat[p].perimeter }
         });
         SeamPieces { n, flat }
