@@ -141,12 +141,15 @@ fn mirror_symmetric_dented_pair_gives_a_mirror_symmetric_form() {
 /// The bundled sample's pair ("Pebble + circle") and the five-lobed shape with a circle were
 /// never converged before the sheet path (1.3 % and 1.4 % strain, folds, reflex chords): now
 /// they must be, at 128 seam vertices, with every promise checked on the mesh — and the mesh has
-/// interior vertices, each piece bending inside, not only along the seam.
+/// interior vertices, each piece bending inside, not only along the seam. So must the blob with
+/// a circle, which the sheet folded by 92° inside the circle while its interior triangles were
+/// 6 seam steps across; and the kidney with a circle at 256, which folded by 109° there.
 #[test]
-fn test_issue_14_pebble_and_five_lobes_with_a_circle_converge() {
-    for (name, a) in [("pebble", shapes::pebble()), ("five-lobed", shapes::five_lobed())] {
-        let s = run(&a, &shapes::circle_for(&a), 0.0, 128, 5000);
-        println!("{name}: {}", mesh_checks::report(&s));
+fn test_issue_14_pebble_five_lobes_blob_and_kidney_with_a_circle_converge() {
+    let cases = [("pebble", shapes::pebble(), 128), ("five-lobed", shapes::five_lobed(), 128), ("blob", shapes::blob(), 128), ("kidney", shapes::kidney(), 256)];
+    for (name, a, n) in cases {
+        let s = run(&a, &shapes::circle_for(&a), 0.0, n, 5000);
+        println!("{name} at {n}: {}", mesh_checks::report(&s));
         assert_eq!(promise(&s), Ok(()), "{name}: wanted every promise kept");
         assert!(s.stats.converged, "{name}: wanted converged, got {:?}", s.stats);
         assert!(s.vertices.len() > s.seam.len(), "{name}: wanted interior vertices, got {} vertices for {} seam vertices", s.vertices.len(), s.seam.len());
@@ -167,14 +170,53 @@ fn test_issue_14_pebble_and_five_lobes_with_a_circle_converge() {
 
 /// Requirement 3 of issue 14: the organic pairs that converge keep their volume from 128 to 256
 /// seam vertices within 1 % (the meshes differ completely: seam samples and interior vertices).
+/// The five-lobed shape was 2.9 % apart when its interior triangles were a number of seam
+/// steps across (coarser at 128, so stiffer) and the homotopy's sheet thinner.
 #[test]
 fn test_issue_14_organic_volumes_agree_at_128_and_256_seam_vertices() {
-    for (name, a) in [("pebble", shapes::pebble()), ("five-lobed", shapes::five_lobed())] {
+    for (name, a) in [("pebble", shapes::pebble()), ("five-lobed", shapes::five_lobed()), ("blob", shapes::blob())] {
         let b = shapes::circle_for(&a);
         let (coarse, fine) = (run(&a, &b, 0.0, 128, 5000), run(&a, &b, 0.0, 256, 5000));
         assert!(coarse.stats.converged && fine.stats.converged, "{name}: both must converge");
         let (v1, v2) = (volume(&coarse), volume(&fine));
         println!("{name}: volume {v1:.1} at 128, {v2:.1} at 256 ({:.2e} relative)", (v1 - v2).abs() / v2);
         assert!((v1 - v2).abs() <= 1e-2 * v2, "{name}: wanted the volume at 256 ({v2}) within 1 %, got {v1} at 128");
+    }
+}
+
+/// The homotopy's start, the convex twins' polyhedron, exists for every smooth organic pair at
+/// 256 seam vertices. The five-lobed shape's twin with a circle could not be solved on all 256
+/// samples (the convex path's finest level stalled at 3.6e-5 strain, dented), so its sheet
+/// started from the convex path's 70 %-strained approximation and ended in a more bent
+/// equilibrium; it is solved on every other sample.
+#[test]
+fn test_issue_14_five_lobed_twins_are_solved() {
+    use dformer::simulate::{seam::Glue, sheet};
+    for (name, a) in [("pebble", shapes::pebble()), ("kidney", shapes::kidney()), ("five-lobed", shapes::five_lobed()), ("blob", shapes::blob())] {
+        let pieces = Glue::new(&a, &shapes::circle_for(&a), 0.0).expect("glue").sample(256);
+        let mesh = sheet::SheetMesh::new(&pieces, sheet::INTERIOR_EDGE).expect("mesh");
+        let start = sheet::twin_start(&pieces, &mesh);
+        let Some((_, coarse, sol)) = start else { panic!("{name}: wanted the twins' polyhedron, got none") };
+        // The polyhedron is isometric to the twins' sample polygons (their own edge lengths), up
+        // to what no polyhedron can do better than: a seam edge's two flat lengths (chords of
+        // arcs of equal length on the two outlines) differ by up to `mismatch`.
+        let len = |p: usize, i: usize, j: usize| {
+            let f = &coarse.flat[p].pts;
+            (f[i][0] - f[j][0]).hypot(f[i][1] - f[j][1])
+        };
+        let m = coarse.n;
+        let mismatch = (0..m).map(|k| (len(0, k, (k + 1) % m) / len(1, k, (k + 1) % m) - 1.0).abs()).fold(0.0, f64::max);
+        let mut worst = 0.0f64;
+        for p in 0..2 {
+            let f = &coarse.flat[p].pts;
+            for t in &sol.tri[p].tris {
+                for (i, j) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {
+                    let flat = (f[i][0] - f[j][0]).hypot(f[i][1] - f[j][1]);
+                    worst = worst.max((norm(sub(sol.x[i], sol.x[j])) / flat - 1.0).abs());
+                }
+            }
+        }
+        println!("{name}: twins solved on {} samples, worst chord strain {worst:.2e}, seam mismatch {mismatch:.2e}", coarse.n);
+        assert!(worst <= mismatch + 1e-6, "{name}: wanted the twins' polyhedron isometric to the seam mismatch {mismatch:.2e}, got {worst:.2e}");
     }
 }

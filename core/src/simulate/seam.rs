@@ -51,6 +51,22 @@ pub struct SeamPieces {
     pub flat: [FlatPiece; 2],
 }
 
+impl SeamPieces {
+    /// Every `stride`-th sample (`stride` divides `n`): the sample polygons of a coarser level
+    /// with the same first vertex. Each coarse edge's arc midpoint is the sample halfway along
+    /// it (its own midpoint when `stride` is 1). Areas and perimeters are the outlines'.
+    pub fn every(&self, stride: usize) -> SeamPieces {
+        let m = self.n / stride;
+        let flat = [0, 1].map(|p| {
+            let f = &self.flat[p];
+            let pts: Vec<[f64; 2]> = (0..m).map(|k| f.pts[k * stride]).collect();
+            let arc_mid = (0..m).map(|k| if stride == 1 { f.arc_mid[k] } else { f.pts[k * stride + stride / 2] }).collect();
+            FlatPiece { pts, arc_mid, area: f.area, perimeter: f.perimeter }
+        });
+        SeamPieces { n: m, flat }
+    }
+}
+
 /// The two outlines oriented for gluing, measured once and sampled at any resolution.
 #[derive(Debug, Clone)]
 pub struct Glue {

@@ -358,19 +358,7 @@ pub fn solve_samples(pieces: &SeamPieces, cap: usize) -> Option<Solution> {
         levels.push(levels[levels.len() - 1] / 2);
     }
     levels.reverse();
-    let samples: Vec<SeamPieces> = levels
-        .iter()
-        .map(|&m| {
-            let stride = pieces.n / m;
-            let flat = [0, 1].map(|p| {
-                let f = &pieces.flat[p];
-                let pts: Vec<[f64; 2]> = (0..m).map(|k| f.pts[k * stride]).collect();
-                let arc_mid = (0..m).map(|k| if stride == 1 { f.arc_mid[k] } else { f.pts[k * stride + stride / 2] }).collect();
-                super::seam::FlatPiece { pts, arc_mid, area: f.area, perimeter: f.perimeter }
-            });
-            SeamPieces { n: m, flat }
-        })
-        .collect();
+    let samples: Vec<SeamPieces> = levels.iter().map(|&m| pieces.every(pieces.n / m)).collect();
     let mut steps = (0usize, 0usize);
     let quick = Patience { cap: QUICK.cap.min(cap), ..QUICK };
     let mut best = ladder(&samples, &levels, quick, &mut steps).ok()?;

@@ -19,11 +19,12 @@ pub struct SheetMesh {
 }
 
 impl SheetMesh {
-    /// Meshes both pieces; `None` if either cannot be meshed.
-    pub fn new(pieces: &SeamPieces, spacing: f64) -> Option<Self> {
+    /// Meshes both pieces with interior edges of about `interior` times the perimeter (never
+    /// shorter than the mean seam step); `None` if either cannot be meshed.
+    pub fn new(pieces: &SeamPieces, interior: f64) -> Option<Self> {
         let n = pieces.n;
         let step = pieces.flat[0].perimeter / n as f64;
-        let edge = spacing * step;
+        let edge = (interior * pieces.flat[0].perimeter).max(step);
         let max_area = 3f64.sqrt() / 4.0 * edge * edge;
         let meshes: [FlatMesh; 2] = [mesh_piece(&pieces.flat[0].pts, max_area)?, mesh_piece(&pieces.flat[1].pts, max_area)?];
         let ia = meshes[0].pts.len() - n;

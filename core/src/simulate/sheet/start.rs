@@ -18,17 +18,25 @@ pub fn lift(pieces: &SeamPieces, start: &Solution, mesh: &SheetMesh) -> Vec<V3> 
 
 /// [`lift`] for a polyhedron `start` on the sample polygons `polygons` and the mesh's vertices
 /// at the flat positions `flat` (e.g. the convex twins' and the meshes carried onto them).
+/// `start` may be a coarser level of the seam, every `stride`-th sample (`stride = mesh.n /
+/// start`'s vertex count): the seam vertices between its own are then carried like interior
+/// ones, by both pieces' maps averaged (they lie just outside the coarse polygons, where the
+/// nearest chord triangle's affine map extends).
 pub fn lift_onto(polygons: [&[[f64; 2]]; 2], start: &Solution, mesh: &SheetMesh, flat: &[Vec<[f64; 2]>; 2]) -> Vec<V3> {
     let n = mesh.n;
+    let stride = (n / start.x.len().max(1)).max(1);
     let mut x = vec![[0.0; 3]; mesh.vertex_count()];
-    x[..n].copy_from_slice(&start.x[..n]);
+    let mut hits = vec![0usize; mesh.vertex_count()];
+    for k in (0..n).step_by(stride) {
+        x[k] = start.x[k / stride];
+    }
     for p in 0..2 {
         let f = polygons[p];
         let tris = &start.tri[p].tris;
         let mut own = vec![false; mesh.vertex_count()];
         mesh.faces[p].iter().flatten().for_each(|&v| own[v] = true);
-        for v in n..mesh.vertex_count() {
-            if !own[v] {
+        for v in 0..mesh.vertex_count() {
+            if !own[v] || (v < n && v % stride == 0) {
                 continue;
             }
             let q = flat[p][v];
@@ -42,7 +50,9 @@ pub fn lift_onto(polygons: [&[[f64; 2]]; 2], start: &Solution, mesh: &SheetMesh,
                 let tf = [f[t[0]], f[t[1]], f[t[2]]];
                 let tx = [start.x[t[0]], start.x[t[1]], start.x[t[2]]];
                 if let Some(y) = map_affine(tf, tx, q) {
-                    x[v] = y;
+                    let h = hits[v] as f64;
+                    x[v] = [0, 1, 2].map(|a| (x[v][a] * h + y[a]) / (h + 1.0));
+                    hits[v] += 1;
                 }
             }
         }
