@@ -164,6 +164,34 @@ pub fn simulate(pieces: JsValue, options: JsValue) -> Result<JsValue, JsError> {
     to_js(&api::simulate::simulate(&pieces, &options).map_err(js_error)?)
 }
 
+#[wasm_bindgen]
+extern "C" {
+    /// A JS function, called with one argument.
+    #[wasm_bindgen(js_name = Function)]
+    pub type Callback;
+    #[wasm_bindgen(method, catch, js_name = call)]
+    fn call1(this: &Callback, context: &JsValue, argument: &JsValue) -> Result<JsValue, JsValue>;
+}
+
+/// `simulateWithProgress(pieces, options, onProgress)`: `simulate`, calling `onProgress({ done,
+/// total, maxStrain })` each time a stage of a non-convex pair's solve ends (see
+/// `crate::simulate::progress`); the same result. What the callback throws is ignored.
+#[wasm_bindgen(js_name = simulateWithProgress)]
+pub fn simulate_with_progress(pieces: JsValue, options: JsValue, on_progress: JsValue) -> Result<JsValue, JsError> {
+    let pieces: Vec<api::path::PathDto> = from_js(pieces, "pieces")?;
+    let options: api::simulate::SimulateOptionsDto = options_or_default(options)?;
+    if !on_progress.is_function() {
+        return Err(js_error(Error::Shape { detail: "onProgress: expected a function".into() }));
+    }
+    let callback: Callback = on_progress.unchecked_into();
+    let mut observe = |p: api::simulate::ProgressDto| {
+        if let Ok(v) = to_js(&p) {
+            let _ = callback.call1(&JsValue::NULL, &v);
+        }
+    };
+    to_js(&api::simulate::simulate_observed(&pieces, &options, &mut observe).map_err(js_error)?)
+}
+
 /// `formFigures(form, options?)` → `{ volume, litres, mass, density, height, width, depth, axes, center }`
 /// of a `simulate` result (see `crate::api::form`).
 #[wasm_bindgen(js_name = formFigures)]

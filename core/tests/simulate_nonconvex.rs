@@ -259,3 +259,30 @@ fn test_issue_14_five_lobed_twins_are_solved() {
         assert!(worst <= mismatch + 1e-6, "{name}: wanted the twins' polyhedron isometric to the seam mismatch {mismatch:.2e}, got {worst:.2e}");
     }
 }
+
+/// The panel shows a long solve's progress (`simulate_observed`): the stages reported rise, out
+/// of one total, the result is the one `simulate` returns, and the last report is the answer's
+/// own strain (measured here from `flat`). A convex pair, solved in milliseconds, reports none.
+#[test]
+fn test_issue_14_progress_rises_and_ends_at_the_answer() {
+    use dformer::simulate::{progress::Progress, simulate_observed};
+    let a = shapes::pebble();
+    let b = shapes::circle_for(&a);
+    let o = SimulateOptions { resolution: 128, ..Default::default() };
+    let mut seen: Vec<Progress> = Vec::new();
+    let s = simulate_observed(&a, &b, &o, &mut |p| seen.push(p)).expect("simulate");
+    let plain = simulate(&a, &b, &o).expect("simulate");
+    assert_eq!(s.vertices, plain.vertices, "the observed solve must return simulate's result");
+    assert!(seen.len() >= 3, "wanted several stages reported, got {seen:?}");
+    for w in seen.windows(2) {
+        assert!(w[1].done > w[0].done && w[1].total == w[0].total, "wanted rising stages of one total, got {:?} then {:?}", w[0], w[1]);
+    }
+    let last = seen[seen.len() - 1];
+    assert!(last.done <= last.total);
+    let strain = max_edge_strain(&s);
+    assert!((last.max_strain - strain).abs() <= 1e-9, "wanted the last report at the answer's strain {strain:.6e}, got {:.6e}", last.max_strain);
+    let mut convex = 0;
+    let e = shapes::dented_ellipse(0.0);
+    simulate_observed(&e, &shapes::circle_for(&e), &o, &mut |_| convex += 1).expect("simulate");
+    assert_eq!(convex, 0, "a convex pair reports no stages");
+}

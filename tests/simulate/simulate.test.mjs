@@ -126,3 +126,33 @@ test('cold solve converges at every offset for ellipse with circle and two ellip
   const lo = Math.min(...volumes), hi = Math.max(...volumes);
   assert.ok((hi - lo) / hi < 1e-2, `ellipse with circle: wanted one volume at every offset, got ${volumes}`);
 });
+
+// simulateWithProgress (the panel's solver thread): a non-convex pair's stages are reported as
+// { done, total, maxStrain }, rising, and the result is simulate's; a callback that is not a
+// function is a clear error. The kidney of issue 14, r = 60(1 + 0.35 cos 2θ − 0.25 cos θ + 0.2 sin 3θ),
+// through 48 anchors with Catmull–Rom tangents.
+test('simulateWithProgress reports rising stages of a non-convex solve and returns simulate\'s result', () => {
+  const r0 = (t) => 60 * (1 + 0.35 * Math.cos(2 * t) - 0.25 * Math.cos(t) + 0.2 * Math.sin(3 * t));
+  const pts = Array.from({ length: 48 }, (_, k) => { const t = (2 * Math.PI * k) / 48; return [r0(t) * Math.cos(t), r0(t) * Math.sin(t)]; });
+  const dent = {
+    closed: true,
+    points: pts.map(([x, y], i) => {
+      const p = pts[(i + 47) % 48], q = pts[(i + 1) % 48];
+      const t = [(q[0] - p[0]) / 6, (q[1] - p[1]) / 6];
+      return { anchor: [x, y], left: [x - t[0], y - t[1]], right: [x + t[0], y + t[1]] };
+    }),
+  };
+  const Pd = m.measure(dent).perimeter;
+  const ring = ellipse(1, 1, Pd / m.measure(ellipse(1, 1)).perimeter);
+  const seen = [];
+  const r = m.simulateWithProgress([dent, ring], { resolution: 96 }, (p) => seen.push(p));
+  const plain = m.simulate([dent, ring], { resolution: 96 });
+  assert.deepEqual(r.vertices, plain.vertices, 'the same result as simulate');
+  assert.ok(r.vertices.length > r.seam.length, `wanted the sheet path (interior vertices), got ${r.vertices.length}`);
+  assert.ok(seen.length >= 2, `wanted stages reported, got ${JSON.stringify(seen)}`);
+  for (let i = 1; i < seen.length; i++) {
+    assert.ok(seen[i].done > seen[i - 1].done && seen[i].total === seen[i - 1].total, JSON.stringify(seen));
+  }
+  for (const p of seen) assert.ok(p.done <= p.total && Number.isFinite(p.maxStrain) && p.maxStrain >= 0, JSON.stringify(p));
+  assert.throws(() => m.simulateWithProgress([dent, ring], {}, 'not a function'), /onProgress: expected a function/);
+});

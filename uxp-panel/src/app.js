@@ -578,7 +578,12 @@
     $('#offset3d-out').textContent = fmt(d.offset);
     solving = true;
     document.body.dataset.solving = 'yes';
-    DF.solver.solve(pieces, options).then(function (result) {
+    var stats3d = $('#stats3d');
+    stats3d.dataset.progress = '';
+    DF.solver.solve(pieces, options, function (p) {
+      // A non-convex pair takes seconds: the share of its stages done, after "solving…".
+      stats3d.dataset.progress = Math.round((100 * p.done) / p.total) + ' %';
+    }).then(function (result) {
       mesh = result;
       meshKey = key;
       meshOffset = d.offset;
@@ -596,6 +601,7 @@
     }).then(function () {
       solving = false;
       document.body.dataset.solving = '';
+      stats3d.dataset.progress = '';
       if (solveAgain && view === '3d') {
         solveAgain = false;
         solve3d();

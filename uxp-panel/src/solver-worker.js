@@ -2,7 +2,9 @@
  * never freezes the panel. A classic worker script (CEP 8 has no module workers); it loads the same
  * bundled core as the page. Messages: { id, pieces, options } → { id, ok, result | error }; with
  * `op: 'figures'` (the seam-offset sweep, sweep.js) the result is only the form's figures
- * (DF.sweepPoint: volume, height, … of `simulate` + `formFigures`), not the whole mesh. */
+ * (DF.sweepPoint: volume, height, … of `simulate` + `formFigures`), not the whole mesh. With
+ * `progress: true` a solve also posts { id, progress: { done, total, maxStrain } } after each
+ * stage of a non-convex pair's solve (the core's `simulateWithProgress`). */
 /* global dformerWasm, importScripts */
 'use strict';
 importScripts('../wasm/dformer.js', 'sweep-point.js');
@@ -29,7 +31,12 @@ self.onmessage = function (e) {
     function () {
       var result;
       try {
-        result = job.op === 'figures' ? self.DF.sweepPoint(dformerWasm, job.pieces, job.options, job.figures) : dformerWasm.simulate(job.pieces, job.options);
+        if (job.op === 'figures') result = self.DF.sweepPoint(dformerWasm, job.pieces, job.options, job.figures);
+        else if (job.progress && typeof dformerWasm.simulateWithProgress === 'function') {
+          result = dformerWasm.simulateWithProgress(job.pieces, job.options, function (p) {
+            self.postMessage({ id: job.id, progress: p });
+          });
+        } else result = dformerWasm.simulate(job.pieces, job.options);
       } catch (err) {
         self.postMessage({ id: job.id, ok: false, error: err && err.message ? err.message : String(err) });
         return;

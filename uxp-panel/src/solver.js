@@ -1,7 +1,7 @@
 /* D-former panel: `simulate` on a worker thread when the page may start one (http, CEP), else on
  * the UI thread (a page opened from file:// in Chrome may not start workers). Host-agnostic.
- * solve(pieces, options) → Promise<result>; one job at a time, the caller coalesces requests.
- * channel(here) → run(job): a worker of its own for another kind of job (the seam-offset sweep,
+ * solve(pieces, options, onProgress?) → Promise<result>; one job at a time, the caller coalesces
+ * requests. channel(here) → run(job, onProgress?): a worker of its own for another kind of job (the seam-offset sweep,
  * sweep.js), `here(job)` → Promise the fallback on this thread. */
 (function (DF) {
   'use strict';
@@ -23,6 +23,10 @@
       }
       worker.onmessage = function (e) {
         var job = waiting[e.data.id];
+        if (job && e.data.progress) {
+          if (job.onProgress) job.onProgress(e.data.progress);
+          return;
+        }
         delete waiting[e.data.id];
         if (!job) return;
         if (e.data.ok) job.resolve(e.data.result);
@@ -42,13 +46,13 @@
       return worker;
     }
 
-    function run(message) {
+    function run(message, onProgress) {
       var w = start();
       if (!w) return here(message);
       return new Promise(function (resolve, reject) {
         var id = nextId++;
-        waiting[id] = { resolve: resolve, reject: reject, message: message };
-        w.postMessage(Object.assign({ id: id }, message));
+        waiting[id] = { resolve: resolve, reject: reject, message: message, onProgress: onProgress };
+        w.postMessage(Object.assign({ id: id, progress: !!onProgress }, message));
       });
     }
     run.threaded = function () {
@@ -64,8 +68,10 @@
   });
 
   DF.solver = {
-    solve: function (pieces, options) {
-      return simulateJob({ pieces: pieces, options: options });
+    /** `onProgress({ done, total, maxStrain })`, optional, hears of each stage of a long solve
+     *  (on the worker only: on this thread the page could not repaint anyway). */
+    solve: function (pieces, options, onProgress) {
+      return simulateJob({ pieces: pieces, options: options }, onProgress);
     },
     channel: channel,
     threaded: function () {

@@ -3,6 +3,7 @@
 
 use super::path::PathDto;
 use crate::error::{Error, Result};
+use crate::simulate::progress::Progress;
 use crate::simulate::{self, SimulateOptions, Simulation, Stats};
 use serde::{Deserialize, Serialize};
 
@@ -98,11 +99,31 @@ impl SimulateOptionsDto {
 
 /// `simulate(pieces, options)`: the 3D D-form of two closed pieces of equal perimeter.
 pub fn simulate(pieces: &[PathDto], options: &SimulateOptionsDto) -> Result<SimulateDto> {
+    simulate_observed(pieces, options, &mut |_| {})
+}
+
+/// One progress report of `simulateWithProgress` (see [`crate::simulate::progress`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct ProgressDto {
+    pub done: usize,
+    pub total: usize,
+    pub max_strain: f64,
+}
+
+impl From<Progress> for ProgressDto {
+    fn from(p: Progress) -> Self {
+        ProgressDto { done: p.done, total: p.total, max_strain: p.max_strain }
+    }
+}
+
+/// [`simulate`] telling `observe` of each stage done (the same result).
+pub fn simulate_observed(pieces: &[PathDto], options: &SimulateOptionsDto, observe: &mut dyn FnMut(ProgressDto)) -> Result<SimulateDto> {
     if pieces.len() != 2 {
         return Err(Error::PieceCount { wanted: "exactly two pieces to simulate", got: pieces.len() });
     }
     let a = pieces[0].to_contour(0)?;
     let b = pieces[1].to_contour(1)?;
     let options = options.check()?;
-    Ok(SimulateDto::from(&simulate::simulate(&a, &b, &options)?))
+    Ok(SimulateDto::from(&simulate::simulate_observed(&a, &b, &options, &mut |p| observe(p.into()))?))
 }

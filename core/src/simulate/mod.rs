@@ -90,6 +90,7 @@ pub mod mesh;
 pub mod metric;
 pub mod normal;
 pub mod options;
+pub mod progress;
 pub mod seam;
 pub mod sheet;
 pub mod solve;
@@ -124,6 +125,12 @@ pub struct Simulation {
 
 /// Glues `a` and `b` (closed, equal perimeters) and finds the 3D D-form.
 pub fn simulate(a: &Contour, b: &Contour, options: &SimulateOptions) -> Result<Simulation> {
+    simulate_observed(a, b, options, &mut |_| {})
+}
+
+/// [`simulate`], telling `observe` each time a stage of a non-convex pair's solve ends
+/// ([`progress`]): the same result, for a host that shows progress.
+pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn FnMut(progress::Progress)) -> Result<Simulation> {
     let timer = clock::Timer::start();
     let glue = seam::Glue::new(a, b, options.offset)?;
     let convex = glue.sample(seam::COARSEST).flat.iter().all(|f| checks::is_convex_polygon(&f.pts));
@@ -136,7 +143,9 @@ pub fn simulate(a: &Contour, b: &Contour, options: &SimulateOptions) -> Result<S
     let left = options.max_iterations.saturating_sub(solution.iterations);
     let mut sim = stats::finish(&pieces, solution.clone());
     if !convex && !solution.converged && left > 0 {
-        if let Some(sheet) = sheet::simulate(&pieces, &solution, sim.stats.max_strain, left) {
+        let mut report = progress::Reporter::new(observe, sheet::STAGES);
+        report.stage(sim.stats.max_strain);
+        if let Some(sheet) = sheet::simulate(&pieces, &solution, sim.stats.max_strain, left, &mut report) {
             sim = sheet;
         }
     }

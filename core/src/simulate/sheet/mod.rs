@@ -47,6 +47,7 @@ pub mod tutte;
 
 use super::checks::faces_cross;
 use super::mesh::Solution;
+use super::progress::Reporter;
 use super::seam::SeamPieces;
 use super::vec3::V3;
 use super::Simulation;
@@ -123,6 +124,10 @@ pub const POLISH_NEAR: f64 = 1.5;
 pub const STALL_ABOVE: f64 = 10.0;
 pub const STALL_DROP: f64 = 0.01;
 
+/// Stages of a non-convex pair's solve, for [`crate::simulate::progress`]: the convex path's
+/// first pass, the homotopy's steps and the thinning's stages.
+pub const STAGES: usize = 1 + HOMOTOPY_STEPS + SCHEDULE.len();
+
 /// What a relaxation did.
 #[derive(Debug, Clone)]
 pub struct Relaxed {
@@ -145,7 +150,7 @@ pub struct Relaxed {
 /// did not fall by [`STALL_DROP`] from the stage before. The heart, the rounded star and the
 /// dart with a circle, each from the fallback start, ran all eleven stages so, at 12–600 %
 /// strain, in 1–3 s.
-pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, schedule: &[f64], faces: &[[usize; 3]]) -> Relaxed {
+pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, schedule: &[f64], faces: &[[usize; 3]], report: &mut Reporter) -> Relaxed {
     let mut steps = 0;
     let mut lambda: f64 = 1e-3;
     let mut out = Relaxed { x: x.clone(), steps: 0, max_strain: shell.max_strain(&x), converged: false };
@@ -162,6 +167,7 @@ pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, sched
         let within = strain <= STRAIN_TARGET;
         let converged = within && finish::sound(&x, shell, faces);
         out = Relaxed { x: x.clone(), steps, max_strain: strain, converged };
+        report.stage(strain);
         let stalled = strain > STALL_ABOVE * STRAIN_TARGET && (strain > (1.0 - STALL_DROP) * before || faces_cross(&x, faces));
         if within || stalled || steps >= budget {
             break;
@@ -199,7 +205,7 @@ pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh) -> Option<(homotopy::Ho
 
 /// The homotopy from convex twins ([`homotopy`]), then the thinning. `None` when no twin pair
 /// can be built and solved.
-pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, budget: usize) -> Option<(Shell, Relaxed)> {
+pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, budget: usize, report: &mut Reporter) -> Option<(Shell, Relaxed)> {
     let (h, coarse, sol) = twin_start(pieces, mesh)?;
     let twin_flat = h.twin_flat();
     let mut x = start::lift_onto([&coarse.flat[0].pts, &coarse.flat[1].pts], &sol, mesh, &twin_flat);
@@ -214,10 +220,12 @@ pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, budget: usize) -> Option<(S
         // The way there is only followed; the last step's equilibrium is the one thinned.
         let (rt, st) = if k == HOMOTOPY_STEPS { (WAYPOINT_RTOL, STAGE_STEPS) } else { (HOMOTOPY_RTOL, HOMOTOPY_STAGE_STEPS) };
         steps += shell.minimize(&mut x, HOMOTOPY_KB * radius * radius, st, rt, &mut lambda);
+        report.stage(shell.max_strain(&x));
     }
     let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
     let thinner: Vec<f64> = SCHEDULE.iter().copied().filter(|&b| b < HOMOTOPY_KB).collect();
-    let mut relaxed = thin(&mut shell, x, radius, budget.saturating_sub(steps), &thinner, &faces);
+    report.skip(SCHEDULE.len() - thinner.len());
+    let mut relaxed = thin(&mut shell, x, radius, budget.saturating_sub(steps), &thinner, &faces, report);
     relaxed.steps += steps;
     Some((shell, relaxed))
 }
@@ -225,15 +233,16 @@ pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, budget: usize) -> Option<(S
 /// The sheet path for a pair with a non-convex piece, given the convex path's answer `seam` on
 /// the same samples (the fallback start, and the answer kept when the sheet does worse). `None`
 /// when a piece cannot be meshed; then the caller keeps `seam`.
-pub fn simulate(pieces: &SeamPieces, seam: &Solution, seam_strain: f64, budget: usize) -> Option<Simulation> {
+pub fn simulate(pieces: &SeamPieces, seam: &Solution, seam_strain: f64, budget: usize, report: &mut Reporter) -> Option<Simulation> {
     let mesh = SheetMesh::new(pieces, INTERIOR_EDGE)?;
     let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
-    let (shell, relaxed) = match follow(pieces, &mesh, budget) {
+    let (shell, relaxed) = match follow(pieces, &mesh, budget, report) {
         Some(r) => r,
         None => {
             let mut shell = mesh.shell();
             let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
-            let r = thin(&mut shell, start::lift(pieces, seam, &mesh), radius, budget, &SCHEDULE, &faces);
+            report.skip(HOMOTOPY_STEPS);
+            let r = thin(&mut shell, start::lift(pieces, seam, &mesh), radius, budget, &SCHEDULE, &faces, report);
             (shell, r)
         }
     };
