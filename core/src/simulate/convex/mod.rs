@@ -353,6 +353,12 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
 /// subpolygons down to [`crate::simulate::seam::COARSEST`]; the quick pass, then the patient one.
 /// `None` unless the finest level converged to a good (convex, undented) branch.
 pub fn solve_samples(pieces: &SeamPieces, cap: usize) -> Option<Solution> {
+    solve_samples_isometric(pieces, cap).and_then(|(s, good)| good.then_some(s))
+}
+
+/// [`solve_samples`], also returning a converged branch that is not good (isometric but dented
+/// or not convex as a whole), with whether it is good.
+pub fn solve_samples_isometric(pieces: &SeamPieces, cap: usize) -> Option<(Solution, bool)> {
     let mut levels = vec![pieces.n];
     while levels[levels.len() - 1] % 2 == 0 && levels[levels.len() - 1] / 2 >= super::seam::COARSEST {
         levels.push(levels[levels.len() - 1] / 2);
@@ -366,5 +372,5 @@ pub fn solve_samples(pieces: &SeamPieces, cap: usize) -> Option<Solution> {
         best = ladder(&samples, &levels, Patience { cap, ..PATIENT }, &mut steps).ok()?;
     }
     let (x, tri, converged, good) = best?;
-    (converged && good).then_some(Solution { x, tri, iterations: steps.0, flips: steps.1, converged })
+    converged.then_some((Solution { x, tri, iterations: steps.0, flips: steps.1, converged }, good))
 }
