@@ -19,11 +19,19 @@
 //! percent, and thinning it compresses the pieces into wrinkles; started thin, a sheet crumples
 //! (Surface Evolver does the same). So the sheet follows a homotopy ([`homotopy`]) from convex
 //! twins of the pieces (same seam edge lengths, so the same gluing), whose D-form the convex
-//! path solves exactly, to the real pieces, at the moderate bending weight
-//! [`HOMOTOPY_KB`]; then it is thinned through [`SCHEDULE`] (the continuation of Surface
+//! path solves exactly ([`twin_start`]), to the real pieces, as a thick sheet
+//! ([`HOMOTOPY_KB`]); then it is thinned through [`SCHEDULE`] (the continuation of Surface
 //! Evolver's elastic-sheet runs) and the answer is the thickest stage within [`STRAIN_TARGET`]
 //! and sound: the least-bending equilibrium the path finds that meets the promise. When no twin
-//! can be solved, the start is the convex path's own approximation ([`start`]).
+//! can be solved, the start is the convex path's own approximation ([`start`]). Every stage is
+//! reported to an observer ([`crate::simulate::progress`]).
+//!
+//! *What it does not do yet.* It follows one path, so "least-bending" is among the stages of
+//! that path, not a search over equilibria. Where the path meets a bifurcation it can end in a
+//! more bent one: the peanut r = 50(1 − 0.25 cos 2θ) with a circle (a convex glued metric, so its
+//! Alexandrov polyhedron exists; the convex path finds it, 113,545 mm³ and bends of 2–4°, from
+//! every start point but the waist) numbered from its waist ends at 160,115 mm³ with bends of
+//! 85°, from a discrete bending energy 6.6 times the other's.
 //!
 //! - [`flatmesh`]: each piece meshed by constrained Delaunay refinement, seam samples kept;
 //! - [`glued`]: the two meshes glued on the seam, and the shell's terms on them;
