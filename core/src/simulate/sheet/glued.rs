@@ -9,7 +9,7 @@ use crate::simulate::metric::KeyMap;
 /// The glued mesh of the two meshed pieces: seam vertices `0..n` shared, then A's interior
 /// vertices, then B's. `faces[p]` are piece p's triangles in the surface's orientation (A's
 /// counter-clockwise as meshed, B's reversed: its flat samples are mirrored, see
-/// [`super::seam`]); `flat[p][v]` is vertex v's position on piece p's flat piece (seam samples
+/// [`crate::simulate::seam`]); `flat[p][v]` is vertex v's position on piece p's flat piece (seam samples
 /// have one on each piece; an interior vertex only on its own, the other piece's entry unused).
 #[derive(Debug, Clone)]
 pub struct SheetMesh {
