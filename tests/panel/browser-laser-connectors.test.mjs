@@ -11,7 +11,13 @@ const panel = usePanelBrowser();
 const R = 30; // mm
 const TWO_CIRCLES = '<svg xmlns="http://www.w3.org/2000/svg" width="200mm" height="100mm" viewBox="0 0 200 100">' +
   `<circle id="a" cx="45" cy="50" r="${R}"/><circle id="b" cx="150" cy="50" r="${R}"/></svg>`;
-const ready = (page) => page.waitForFunction(() => document.body.dataset.state === 'ready');
+// The page recomputes the design on the next animation frame after an input (app.js `recompute`),
+// and until then its state is still the previous design's "ready": wait two frames first, or the
+// preview read below is sometimes the one before the change (1 run in 3 showed no seam lines).
+const ready = async (page) => {
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  await page.waitForFunction(() => document.body.dataset.state === 'ready');
+};
 
 /** Sets the design up with `act`, downloads the laser SVG and reads it back in a blank page. */
 async function download(act) {
