@@ -22,6 +22,8 @@ test('one shape: measured, then scaled to an exact length (pivot start) and down
   await page.selectOption('#norm-target', 'exact');
   await page.fill('#norm-exact', '300');
   await page.selectOption('#norm-pivot', 'start');
+  // The page recomputes on the next animation frame; until then its state is the last design's.
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   await page.waitForFunction(() => document.body.dataset.state === 'ready');
   assert.equal(await page.isDisabled('#apply-btn'), false, 'Download SVG enabled for one scaled shape');
   const text = await downloadSvg(page);

@@ -22,8 +22,17 @@ const U_AND_SQUARE = {
     { name: 'Square', path: { closed: true, points: [[300, 0], [500, 0], [500, 200], [300, 200]].map(([x, y]) => corner(x, y)) } },
   ],
 };
-const ready = (page) => page.waitForFunction(() => document.body.dataset.state === 'ready');
-const failed = (page) => page.waitForFunction(() => document.body.dataset.state === 'error');
+// The panel recomputes on the next animation frame after an input; until then its state is the
+// previous design's: wait two frames before reading it (as browser-laser-connectors does).
+const frames = (page) => page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+const ready = async (page) => {
+  await frames(page);
+  await page.waitForFunction(() => document.body.dataset.state === 'ready');
+};
+const failed = async (page) => {
+  await frames(page);
+  await page.waitForFunction(() => document.body.dataset.state === 'error');
+};
 
 test('locking leaves: slots on the cut layer of both pieces, in the preview and in the document', async () => {
   const { page, host } = await openPanel(panel.browser, panel.url, TWO_SHAPES);
