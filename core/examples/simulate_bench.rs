@@ -196,6 +196,31 @@ fn nonconvex(name: &str, a: &Contour, b: &Contour, offset: f64) {
         s.stats.iterations,
         mesh_checks::report(&s)
     );
+    // Where the time goes: one Levenberg–Marquardt step with a fresh factorization on this pair's
+    // own sheet mesh, at its answer (the block LDLᵀ is most of a step).
+    let pieces = dformer::simulate::seam::Glue::new(a, b, o.offset).expect("glue").sample(256);
+    if let Some(mesh) = dformer::simulate::sheet::SheetMesh::new(&pieces, dformer::simulate::sheet::INTERIOR_EDGE) {
+        if mesh.vertex_count() == s.vertices.len() {
+            let mut shell = mesh.shell();
+            let radius = perimeter(a) / std::f64::consts::TAU;
+            let mut times: Vec<f64> = (0..10)
+                .map(|_| {
+                    let mut x = s.vertices.clone();
+                    let mut lambda = 1e-3;
+                    let t = Instant::now();
+                    shell.minimize(&mut x, 1e-7 * radius * radius, 1, 0.0, &mut lambda);
+                    t.elapsed().as_secs_f64() * 1e3
+                })
+                .collect();
+            times.sort_by(f64::total_cmp);
+            let step = times[5];
+            println!(
+                "  one sheet step (assembly, fresh LDLᵀ, solve, energy) on its {} vertices: {step:.2} ms median; the solve took {:.0}× that",
+                mesh.vertex_count(),
+                ms / step
+            );
+        }
+    }
 }
 
 fn main() {
