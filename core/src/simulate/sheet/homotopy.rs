@@ -21,6 +21,7 @@ use super::glued::SheetMesh;
 use crate::simulate::seam::{FlatPiece, SeamPieces};
 
 /// The meshes' positions on the two pieces' convex twins.
+#[derive(Debug, Clone)]
 pub struct Homotopy {
     /// Every vertex of piece p on its twin (seam on the twin polygon, interior by Tutte).
     twin: [Vec<[f64; 2]>; 2],

@@ -210,13 +210,12 @@ pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh) -> Option<(homotopy::Ho
             let coarse = twin.every(stride);
             match super::convex::solve_samples_isometric(&coarse, TWIN_BUDGET) {
                 Some((sol, true)) => return Some((h, coarse, sol)),
-                Some((sol, false)) if dented.is_none() => dented = Some((share, coarse, sol)),
+                Some((sol, false)) if dented.is_none() => dented = Some((h.clone(), coarse, sol)),
                 _ => {}
             }
         }
     }
-    let (share, coarse, sol) = dented?;
-    Some((homotopy::Homotopy::new(pieces, mesh, share)?, coarse, sol))
+    dented
 }
 
 /// The homotopy from convex twins ([`homotopy`]), then the thinning. `None` when no twin pair
