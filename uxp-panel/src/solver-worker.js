@@ -32,7 +32,7 @@ self.onmessage = function (e) {
       var result;
       try {
         if (job.op === 'figures') result = self.DF.sweepPoint(dformerWasm, job.pieces, job.options, job.figures);
-        else if (job.progress && typeof dformerWasm.simulateWithProgress === 'function') {
+        else if (job.progress) {
           result = dformerWasm.simulateWithProgress(job.pieces, job.options, function (p) {
             self.postMessage({ id: job.id, progress: p });
           });
