@@ -191,8 +191,8 @@ pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, sched
 /// fourth, every eighth ([`TWIN_STRIDES`]). Returns the homotopy, the sample polygons solved and
 /// their polyhedron: the first convex one, else the first isometric one the convex path found
 /// (dented: the rounded star's twins with a circle have no other within reach at any stride,
-/// and from a dented twin the star's sheet ends within 1.5e-3 strain, no crossing, where the
-/// fallback start ended 18 % strained and through itself).
+/// and from a dented twin the star's sheet ends within 1.5e-3 strain, no crossing, where from
+/// the fallback start it ended 11–18 % strained and through itself).
 ///
 /// Starting from the convex path's approximation of twins it could not solve did worse than
 /// the fallback start (the five-lobed shape with a circle ended with crossing sheets), and so
