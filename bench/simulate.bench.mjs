@@ -99,6 +99,12 @@ const heart = smooth(Array.from({ length: 64 }, (_, k) => {
   return [3 * 16 * Math.sin(t) ** 3, 3 * (13 * Math.cos(t) - 5 * Math.cos(2 * t) - 2 * Math.cos(3 * t) - Math.cos(4 * t))];
 }).reverse());
 const star = polar(100, (t) => 50 * (1 + 0.28 * Math.cos(5 * t) ** 3));
+// A heart as drawn in Illustrator: corner anchors at the dip and the tip (shapes.rs' drawn_heart).
+const knot = (anchor, left, right) => ({ anchor, left, right });
+const drawnHeart = { closed: true, points: [
+  knot([0, 40], [12, 50], [-12, 50]), knot([-30, 60], [-18, 60], [-42, 60]), knot([-55, 30], [-55, 45], [-55, 15]),
+  knot([0, -45], [-20, -20], [20, -20]), knot([55, 30], [55, 15], [55, 45]), knot([30, 60], [42, 60], [18, 60]),
+] };
 
 // The sampling floor: a seam edge is one mesh edge with two flat lengths, A's chord and B's chord
 // of the same arc (they differ by ~h³(κ_A² − κ_B²)/24), so no mesh on these seam samples can have
@@ -124,14 +130,40 @@ function samplingFloor(r) {
   return worst;
 }
 
-for (const [name, a] of [['Pebble + circle (the browser app sample)', pebble], ['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart + circle', heart], ['rounded star + circle', star]]) {
+// The sharpest bend across an edge inside a piece (degrees), from the mesh: the fold check of
+// `converged` (no bend above 90°), computed here independently of the solver's stats.
+function maxBendInside(r) {
+  const v = r.vertices;
+  const normal = ([a, b, c]) => {
+    const u = [0, 1, 2].map((k) => v[b][k] - v[a][k]), w = [0, 1, 2].map((k) => v[c][k] - v[a][k]);
+    const n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]];
+    const l = Math.hypot(...n);
+    return n.map((x) => x / l);
+  };
+  const owner = new Map();
+  let worst = 0;
+  r.triangles.forEach((t, f) => {
+    for (let q = 0; q < 3; q++) {
+      const [i, j] = [t[q], t[(q + 1) % 3]];
+      const g = owner.get(`${j},${i}`);
+      if (g === undefined) { owner.set(`${i},${j}`, f); continue; }
+      if (r.piece[g] !== r.piece[f]) continue;
+      const [n1, n2] = [normal(r.triangles[g]), normal(t)];
+      const c = [n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2], n1[0] * n2[1] - n1[1] * n2[0]];
+      worst = Math.max(worst, Math.atan2(Math.hypot(...c), n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2]));
+    }
+  });
+  return (worst * 180) / Math.PI;
+}
+
+for (const [name, a] of [['Pebble + circle (the browser app sample)', pebble], ['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart + circle', heart], ['heart drawn with corners + circle', drawnHeart], ['rounded star + circle', star]]) {
   const pieces = [a, circleFor(a)];
   const t0 = performance.now();
   const r = m.simulate(pieces, { offset: 0, resolution: 256 });
   const ms = performance.now() - t0;
   const s = r.stats;
   console.log(`== ${name} (WASM, non-convex, 256 seam vertices) ==`);
-  console.log(`  time ${ms.toFixed(1)} ms (≤ 1000 ms) ${mark(ms <= 1000)}   converged ${s.converged} ${mark(s.converged)}   max strain ${s.maxStrain.toExponential(2)} reflex ${s.reflexEdges} iterations ${s.iterations}`);
+  console.log(`  time ${ms.toFixed(1)} ms (≤ 1000 ms) ${mark(ms <= 1000)}   converged ${s.converged} ${mark(s.converged)}   max strain ${s.maxStrain.toExponential(2)} sharpest bend inside a piece ${maxBendInside(r).toFixed(0)}° (≤ 90) iterations ${s.iterations}`);
   const floor = samplingFloor(r);
   console.log(`  sampling floor: no mesh on these seam samples gets below max edge strain ${floor.toExponential(2)} (≤ 1e-3 needed) ${mark(floor <= 1e-3)}${floor > 1e-3 ? ' — the samples, not the solver, rule out a converged answer' : ''}`);
 }

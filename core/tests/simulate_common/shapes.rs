@@ -91,6 +91,22 @@ pub fn heart() -> Contour {
     smooth(&pts)
 }
 
+/// A heart as one draws it in Illustrator or Inkscape: six cubic arcs, smooth on its lobes and
+/// sides, with a corner anchor at the top dip (reflex, an inside angle of about 260°) and one
+/// at the bottom tip (about 78°); first anchor at the dip, counter-clockwise.
+pub fn drawn_heart() -> Contour {
+    let k = |a: (f64, f64), l: (f64, f64), r: (f64, f64)| Knot { anchor: Point::new(a.0, a.1), left: Point::new(l.0, l.1), right: Point::new(r.0, r.1) };
+    let knots = vec![
+        k((0.0, 40.0), (12.0, 50.0), (-12.0, 50.0)),
+        k((-30.0, 60.0), (-18.0, 60.0), (-42.0, 60.0)),
+        k((-55.0, 30.0), (-55.0, 45.0), (-55.0, 15.0)),
+        k((0.0, -45.0), (-20.0, -20.0), (20.0, -20.0)),
+        k((55.0, 30.0), (55.0, 15.0), (55.0, 45.0)),
+        k((30.0, 60.0), (42.0, 60.0), (18.0, 60.0)),
+    ];
+    Contour::new(knots, 0).unwrap()
+}
+
 /// A five-pointed star with rounded tips: r = 50(1 + 0.3 cos 5θ)^... sampled smoothly.
 pub fn rounded_star() -> Contour {
     polar(100, |t| 50.0 * (1.0 + 0.28 * (5.0 * t).cos().powi(3)))
