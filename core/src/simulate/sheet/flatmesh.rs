@@ -16,6 +16,23 @@ use spade::{AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementPara
 /// boundary edges and gives bending hinges of bounded aspect.
 const MIN_ANGLE: f64 = 25.0;
 
+/// Largest angle of a fan triangle at its seam vertex in [`mesh_piece_with_fans`] (see
+/// [`super::glued::CONE_DEFECT`] for why there are fans).
+pub const FAN_ANGLE: f64 = 30.0 * std::f64::consts::PI / 180.0;
+
+/// Whether `q` is inside the polygon `p` (even–odd rule).
+fn inside(p: &[[f64; 2]], q: [f64; 2]) -> bool {
+    let n = p.len();
+    let mut c = false;
+    for k in 0..n {
+        let (a, b) = (p[k], p[(k + 1) % n]);
+        if (a[1] > q[1]) != (b[1] > q[1]) && q[0] < a[0] + (q[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) {
+            c = !c;
+        }
+    }
+    c
+}
+
 /// A meshed flat piece: `pts[..n]` the seam samples as given, then the interior vertices;
 /// triangles counter-clockwise.
 #[derive(Debug, Clone)]
@@ -28,6 +45,25 @@ pub struct FlatMesh {
 /// `None` when the polygon cannot be meshed (crossing or repeated samples) or the result is not
 /// a triangulated disk whose boundary is exactly the seam.
 pub fn mesh_piece(seam: &[[f64; 2]], max_area: f64) -> Option<FlatMesh> {
+    mesh_piece_with_fans(seam, max_area, &[])
+}
+
+/// Interior angle (radians, in (0, 2π)) of the counter-clockwise polygon `p` at vertex `k`.
+pub fn interior_angle(p: &[[f64; 2]], k: usize) -> f64 {
+    let n = p.len();
+    let (a, b, c) = (p[(k + n - 1) % n], p[k], p[(k + 1) % n]);
+    let (u, v) = ([c[0] - b[0], c[1] - b[1]], [a[0] - b[0], a[1] - b[1]]);
+    let t = (u[0] * v[1] - u[1] * v[0]).atan2(u[0] * v[0] + u[1] * v[1]);
+    if t <= 0.0 { t + std::f64::consts::TAU } else { t }
+}
+
+/// [`mesh_piece`] with a fan of extra vertices inside the piece around each seam vertex of
+/// `fans`: one at the mean of its two seam steps' lengths on every ray that splits the vertex's
+/// interior angle into equal parts of at most [`FAN_ANGLE`] (a ray point outside the polygon,
+/// beside a neighbouring reflex corner, is left out). The refinement keeps these vertices and
+/// may add more around them, so every triangle at such a vertex has its angle there at most
+/// [`FAN_ANGLE`].
+pub fn mesh_piece_with_fans(seam: &[[f64; 2]], max_area: f64, fans: &[usize]) -> Option<FlatMesh> {
     let n = seam.len();
     if n < 3 || !(max_area > 0.0 && max_area.is_finite()) {
         return None;
@@ -37,6 +73,21 @@ pub fn mesh_piece(seam: &[[f64; 2]], max_area: f64) -> Option<FlatMesh> {
     let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::bulk_load_cdt(vertices, edges).ok()?;
     if cdt.num_vertices() != n || cdt.num_constraints() != n {
         return None;
+    }
+    for &k in fans {
+        let (a, b, c) = (seam[(k + n - 1) % n], seam[k], seam[(k + 1) % n]);
+        let h = 0.5 * ((a[0] - b[0]).hypot(a[1] - b[1]) + (c[0] - b[0]).hypot(c[1] - b[1]));
+        let angle = interior_angle(seam, k);
+        let parts = (angle / FAN_ANGLE).ceil() as usize;
+        let start = (c[1] - b[1]).atan2(c[0] - b[0]);
+        for j in 1..parts {
+            let t = start + angle * j as f64 / parts as f64;
+            let q = [b[0] + h * t.cos(), b[1] + h * t.sin()];
+            if !inside(seam, q) {
+                continue;
+            }
+            cdt.insert(Point2::new(q[0], q[1])).ok()?;
+        }
     }
     let area = polygon_area(seam);
     let budget = ((8.0 * area / max_area) as usize).max(4 * n) + 1000;
@@ -130,5 +181,35 @@ mod tests {
         assert!((covered - area).abs() < 1e-9 * area, "area wanted {area}, got {covered}");
         assert_eq!(&m.pts[..n], &seam[..], "seam samples kept in order");
         assert!(m.tris.len() >= 400, "about area/max_area triangles at least: got {}", m.tris.len());
+    }
+
+    /// A 40 × 40 square sampled every 2 with fans at its four corners: still a disk of its area
+    /// with its samples kept, and every triangle at a corner has its angle there at most 30°
+    /// (without fans the refinement leaves each corner as one 90° triangle).
+    #[test]
+    fn fans_split_a_corner_into_triangles_of_at_most_30_degrees() {
+        let side = 20;
+        let mut seam = Vec::new();
+        for (start, dir) in [([0.0, 0.0], [2.0, 0.0]), ([40.0, 0.0], [0.0, 2.0]), ([40.0, 40.0], [-2.0, 0.0]), ([0.0, 40.0], [0.0, -2.0])] {
+            seam.extend((0..side).map(|k| [start[0] + dir[0] * k as f64, start[1] + dir[1] * k as f64]));
+        }
+        let corners = [0, side, 2 * side, 3 * side];
+        let m = mesh_piece_with_fans(&seam, 40.0, &corners).expect("a mesh");
+        let covered: f64 = m.tris.iter().map(|t| crate::simulate::metric::orient(m.pts[t[0]], m.pts[t[1]], m.pts[t[2]]) / 2.0).sum();
+        assert!((covered - 1600.0).abs() < 1e-9 * 1600.0, "area wanted 1600, got {covered}");
+        assert_eq!(&m.pts[..seam.len()], &seam[..], "seam samples kept in order");
+        for &c in &corners {
+            let mut total = 0.0;
+            for t in m.tris.iter().filter(|t| t.contains(&c)) {
+                let k = t.iter().position(|&v| v == c).unwrap();
+                let (a, b) = (m.pts[t[(k + 1) % 3]], m.pts[t[(k + 2) % 3]]);
+                let o = m.pts[c];
+                let (u, v) = ([a[0] - o[0], a[1] - o[1]], [b[0] - o[0], b[1] - o[1]]);
+                let angle = (u[0] * v[1] - u[1] * v[0]).atan2(u[0] * v[0] + u[1] * v[1]).to_degrees();
+                assert!(angle <= 30.0 + 1e-9, "corner {c}: wanted fan angles ≤ 30°, got {angle:.2}°");
+                total += angle;
+            }
+            assert!((total - 90.0).abs() < 1e-9, "corner {c}: the fan covers {total}°, wanted 90°");
+        }
     }
 }
