@@ -28,10 +28,15 @@
 //!
 //! *What it does not do yet.* It follows one path, so "least-bending" is among the stages of
 //! that path, not a search over equilibria. Where the path meets a bifurcation it can end in a
-//! more bent one: the peanut r = 50(1 − 0.25 cos 2θ) with a circle (a convex glued metric, so its
-//! Alexandrov polyhedron exists; the convex path finds it, 113,545 mm³ and bends of 2–4°, from
-//! every start point but the waist) numbered from its waist ends at 160,115 mm³ with bends of
-//! 85°, from a discrete bending energy 6.6 times the other's.
+//! more bent one: a probe's peanut r = 50(1 − 0.25 cos 2θ) with a circle (a convex glued metric,
+//! so its Alexandrov polyhedron exists: 113,545 mm³, bends of 2–4°), numbered from its waist, had
+//! the convex path fail and the sheet end at 160,115 mm³ with bends of 85°, from a discrete
+//! bending energy 6.6 times the other's. The same peanut built as the tests build outlines
+//! (`polar`, 24–200 points, 16 offsets) is solved by the convex path every time, so the failure
+//! hangs on the input's last bits. And the thin limit of a pair with a reflex corner bends the
+//! circle sharply along a line across its inside (by 110–123° between two triangles: the L, the
+//! dart and a heart drawn with corners, each with a circle); thinning in four times smaller
+//! steps ends in the same shape.
 //!
 //! - [`flatmesh`]: each piece meshed by constrained Delaunay refinement, seam samples kept;
 //! - [`glued`]: the two meshes glued on the seam, and the shell's terms on them;
