@@ -20,19 +20,6 @@ const MIN_ANGLE: f64 = 25.0;
 /// [`super::glued::CONE_DEFECT`] for why there are fans).
 pub const FAN_ANGLE: f64 = 30.0 * std::f64::consts::PI / 180.0;
 
-/// Whether `q` is inside the polygon `p` (even–odd rule).
-fn inside(p: &[[f64; 2]], q: [f64; 2]) -> bool {
-    let n = p.len();
-    let mut c = false;
-    for k in 0..n {
-        let (a, b) = (p[k], p[(k + 1) % n]);
-        if (a[1] > q[1]) != (b[1] > q[1]) && q[0] < a[0] + (q[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) {
-            c = !c;
-        }
-    }
-    c
-}
-
 /// A meshed flat piece: `pts[..n]` the seam samples as given, then the interior vertices;
 /// triangles counter-clockwise.
 #[derive(Debug, Clone)]
@@ -74,6 +61,11 @@ pub fn mesh_piece_with_fans(seam: &[[f64; 2]], max_area: f64, fans: &[usize]) ->
     if cdt.num_vertices() != n || cdt.num_constraints() != n {
         return None;
     }
+    // The sample polygon as a path, for kurbo's point-in-shape test (non-zero winding).
+    let outline = (!fans.is_empty()).then(|| kurbo::BezPath::from_vec((0..=n).map(|k| {
+        let p = kurbo::Point::new(seam[k % n][0], seam[k % n][1]);
+        if k == 0 { kurbo::PathEl::MoveTo(p) } else { kurbo::PathEl::LineTo(p) }
+    }).chain([kurbo::PathEl::ClosePath]).collect()));
     for &k in fans {
         let (a, b, c) = (seam[(k + n - 1) % n], seam[k], seam[(k + 1) % n]);
         let h = 0.5 * ((a[0] - b[0]).hypot(a[1] - b[1]) + (c[0] - b[0]).hypot(c[1] - b[1]));
@@ -83,7 +75,7 @@ pub fn mesh_piece_with_fans(seam: &[[f64; 2]], max_area: f64, fans: &[usize]) ->
         for j in 1..parts {
             let t = start + angle * j as f64 / parts as f64;
             let q = [b[0] + h * t.cos(), b[1] + h * t.sin()];
-            if !inside(seam, q) {
+            if !outline.as_ref().is_some_and(|o| kurbo::Shape::contains(o, kurbo::Point::new(q[0], q[1]))) {
                 continue;
             }
             cdt.insert(Point2::new(q[0], q[1])).ok()?;

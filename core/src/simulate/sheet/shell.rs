@@ -68,9 +68,10 @@ pub const REUSE: usize = 4;
 /// thrown away and refactored with more damping (a backtracking line search along the
 /// Levenberg–Marquardt direction, Nocedal & Wright §3.1). Raising λ costs a new factorization,
 /// most of a step's time; trying `d/2, d/4, d/8` costs three energy evaluations. At 256 seam
-/// vertices the sheet paths' fresh factorizations fell by 14–57 % (kidney with a circle 112 →
-/// 87, rounded star 226 → 110, L 164 → 73), to the same equilibria (volumes within 0.3 %).
-/// One halving saved as much on all but the star and the five lobes; six no more than three.
+/// vertices the sheet paths' fresh factorizations fell by up to 55 % (each with a circle:
+/// Pebble 45 → 45, five lobes 90 → 79, kidney 112 → 87, rounded star 226 → 110, L 164 → 73),
+/// to the same equilibria (volumes within 0.3 %). One halving saved as much on all but the
+/// star and the five lobes; six no more than three.
 pub const HALVINGS: usize = 3;
 
 impl Shell {
