@@ -85,6 +85,11 @@ pub fn closed_manifold(s: &Simulation) -> Result<(), String> {
 /// Largest bend (angle between the two faces' normals, 0 for flat, π for folded back) across
 /// an edge inside one piece (both triangles of the same piece), in radians.
 pub fn max_bend_inside(s: &Simulation) -> f64 {
+    max_bend_inside_at(s, |_, _| true)
+}
+
+/// [`max_bend_inside`] over the edges `(i, j)` that `keep` accepts.
+pub fn max_bend_inside_at(s: &Simulation, keep: impl Fn(usize, usize) -> bool) -> f64 {
     let mut owner: HashMap<(usize, usize), usize> = HashMap::new();
     let normal = |t: usize| {
         let [a, b, c] = s.triangles[t];
@@ -97,7 +102,7 @@ pub fn max_bend_inside(s: &Simulation) -> f64 {
         for (a, b) in [(0, 1), (1, 2), (2, 0)] {
             let (i, j) = (tri[a], tri[b]);
             if let Some(&u) = owner.get(&(j, i)) {
-                if s.piece[u] == s.piece[t] {
+                if s.piece[u] == s.piece[t] && keep(i, j) {
                     let (n1, n2) = (normal(u), normal(t));
                     worst = worst.max(norm(cross(n1, n2)).atan2(dot(n1, n2)));
                 }
