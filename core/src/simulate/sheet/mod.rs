@@ -219,14 +219,14 @@ pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, sched
 /// did smooth outlines through the twins solved as curves (other equilibria at 128 and 256
 /// seam vertices, 2 % apart).
 pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh) -> Option<(homotopy::Homotopy, SeamPieces, Solution)> {
+    let strides: Vec<usize> = TWIN_STRIDES.iter().copied().filter(|&s| pieces.n % s == 0 && pieces.n / s >= super::seam::COARSEST).collect();
     let mut dented = None;
+    // The twins tried so far (each an embedding of both meshes), for the last try below.
+    let mut built = Vec::new();
     for &share in &TWIN_CIRCLE_SHARES {
         let Some(h) = homotopy::Homotopy::new(pieces, mesh, share) else { continue };
         let twin = h.twin_pieces(pieces);
-        for &stride in &TWIN_STRIDES {
-            if pieces.n % stride != 0 || pieces.n / stride < super::seam::COARSEST {
-                continue;
-            }
+        for &stride in &strides {
             let coarse = twin.every(stride);
             match super::convex::solve_samples_isometric(&coarse, TWIN_BUDGET) {
                 Some((sol, true)) => return Some((h, coarse, sol)),
@@ -234,20 +234,17 @@ pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh) -> Option<(homotopy::Ho
                 _ => {}
             }
         }
+        built.push((h, twin));
     }
     if dented.is_some() {
         return dented;
     }
     // None within the budget: the coarsest samples, patiently, before the fallback start.
-    let stride = TWIN_STRIDES.iter().copied().filter(|&s| pieces.n % s == 0 && pieces.n / s >= super::seam::COARSEST).max()?;
-    for &share in &TWIN_CIRCLE_SHARES {
-        let Some(h) = homotopy::Homotopy::new(pieces, mesh, share) else { continue };
-        let coarse = h.twin_pieces(pieces).every(stride);
-        if let Some((sol, _)) = super::convex::solve_samples_isometric(&coarse, TWIN_RESCUE_BUDGET) {
-            return Some((h, coarse, sol));
-        }
-    }
-    None
+    let &stride = strides.last()?;
+    built.into_iter().find_map(|(h, twin)| {
+        let coarse = twin.every(stride);
+        super::convex::solve_samples_isometric(&coarse, TWIN_RESCUE_BUDGET).map(|(sol, _)| (h, coarse, sol))
+    })
 }
 
 /// The homotopy from convex twins ([`homotopy`]), then the thinning. `None` when no twin pair
