@@ -366,3 +366,36 @@ fn test_issue_14_corners_glued_to_a_circle_do_not_fold_the_mesh_at_their_cone_po
         }
     }
 }
+
+/// The panel had one warning for every unconverged answer, "the solver found no form in which
+/// both pieces keep their flat shape (they stretch up to 0 % here)", which it showed for the L
+/// glued to a circle: its sheets keep their flat lengths to 1e-3 and do not cross, but crease the
+/// circle by 123°. `stats.shortfall` now names the promise an answer misses and
+/// `stats.maxBend` its sharpest bend, both checked here against the mesh: stretch (an edge over
+/// 1e-3 off its flat length), else crossing triangles, else a bend over 90° inside a piece.
+#[test]
+fn test_issue_14_an_isometric_creased_form_is_called_creased_not_stretched() {
+    use dformer::simulate::Shortfall;
+    let mut seen = Vec::new();
+    for (name, a) in [("L hexagon", shapes::l_shape()), ("smooth-cusp heart", shapes::heart()), ("Pebble", shapes::pebble())] {
+        let s = run(&a, &shapes::circle_for(&a), 0.0, 256, 5000);
+        let (strain, bend) = (max_edge_strain(&s), max_bend_inside(&s));
+        let crossings = self_intersections(&s, 1e-9).len();
+        println!("{name}: {} | shortfall {:?}", mesh_checks::report(&s), s.stats.shortfall);
+        assert!((s.stats.max_bend - bend).abs() <= 1e-9, "{name}: wanted maxBend {bend:.12} (from the mesh), got {:.12}", s.stats.max_bend);
+        let wanted = if s.stats.converged {
+            None
+        } else if strain > 1e-3 {
+            Some(Shortfall::Stretch)
+        } else if crossings > 0 {
+            Some(Shortfall::Crossing)
+        } else if bend > std::f64::consts::FRAC_PI_2 {
+            Some(Shortfall::Fold)
+        } else {
+            Some(Shortfall::Unsettled)
+        };
+        assert_eq!(s.stats.shortfall, wanted, "{name}: strain {strain:.2e}, {crossings} crossing pairs, bend {:.1}°", bend.to_degrees());
+        seen.push(wanted);
+    }
+    assert_eq!(seen, [Some(Shortfall::Fold), Some(Shortfall::Stretch), None], "precondition: a creased, a stretched and a converged pair");
+}

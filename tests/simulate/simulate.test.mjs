@@ -156,3 +156,41 @@ test('simulateWithProgress reports rising stages of a non-convex solve and retur
   for (const p of seen) assert.ok(p.done <= p.total && Number.isFinite(p.maxStrain) && p.maxStrain >= 0, JSON.stringify(p));
   assert.throws(() => m.simulateWithProgress([dent, ring], {}, 'not a function'), /onProgress: expected a function/);
 });
+
+// stats.shortfall says why an answer is not converged, and stats.maxBend its sharpest bend
+// inside a piece; both checked against the mesh here. An L glued to a circle keeps every edge
+// within 1e-3 of its flat length without crossing, but creases the circle by more than 90°:
+// "fold", where the panel used to say the pieces "stretch up to 0 %". A converged pair: null.
+test('stats.shortfall names the promise an unconverged answer misses; maxBend is the mesh\'s', () => {
+  const poly = (pts) => ({ closed: true, points: pts.map((a) => ({ anchor: a, left: a, right: a })) });
+  const L = poly([[0, 0], [80, 0], [80, 40], [40, 40], [40, 80], [0, 80]]);
+  const ring = ellipse(1, 1, m.measure(L).perimeter / m.measure(ellipse(1, 1)).perimeter);
+  const r = m.simulate([L, ring], {});
+  const x = r.vertices;
+  let strain = 0;
+  r.triangles.forEach((t, f) => {
+    for (let q = 0; q < 3; q++) {
+      const [a, b] = [q, (q + 1) % 3];
+      const flat = Math.hypot(r.flat[f][a][0] - r.flat[f][b][0], r.flat[f][a][1] - r.flat[f][b][1]);
+      strain = Math.max(strain, Math.abs(Math.hypot(...sub(x[t[a]], x[t[b]])) / flat - 1));
+    }
+  });
+  const normal = r.triangles.map(([i, j, k]) => cross(sub(x[j], x[i]), sub(x[k], x[i])));
+  const owner = new Map();
+  let bend = 0;
+  r.triangles.forEach((t, f) => {
+    for (let q = 0; q < 3; q++) {
+      const g = owner.get(`${t[(q + 1) % 3]},${t[q]}`);
+      if (g === undefined) { owner.set(`${t[q]},${t[(q + 1) % 3]}`, f); continue; }
+      if (r.piece[g] !== r.piece[f]) continue;
+      bend = Math.max(bend, Math.atan2(Math.hypot(...cross(normal[f], normal[g])), dot(normal[f], normal[g])));
+    }
+  });
+  assert.ok(Math.abs(r.stats.maxBend - bend) < 1e-9, `maxBend: wanted ${bend} from the mesh, got ${r.stats.maxBend}`);
+  assert.ok(strain <= 1e-3 && bend > Math.PI / 2 && !r.stats.converged,
+    `precondition: an isometric, creased L (strain ${strain.toExponential(2)}, bend ${(bend * 180 / Math.PI).toFixed(1)}°, converged ${r.stats.converged})`);
+  assert.equal(r.stats.shortfall, 'fold');
+  const ok = m.simulate([e, e], { offset: P / 4, resolution: 128 });
+  assert.ok(ok.stats.converged);
+  assert.equal(ok.stats.shortfall, null);
+});

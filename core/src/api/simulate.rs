@@ -42,6 +42,11 @@ pub struct StatsDto {
     pub flips: usize,
     pub converged: bool,
     pub ms: f64,
+    /// Largest bend inside a piece, radians (see [`crate::simulate::Stats::max_bend`]).
+    pub max_bend: f64,
+    /// `null` when converged, else why not: `"stretch"`, `"crossing"`, `"fold"` or
+    /// `"unsettled"` ([`crate::simulate::Shortfall`]).
+    pub shortfall: Option<String>,
 }
 
 impl From<&Stats> for StatsDto {
@@ -60,6 +65,8 @@ impl From<&Stats> for StatsDto {
             flips: s.flips,
             converged: s.converged,
             ms: s.ms,
+            max_bend: s.max_bend,
+            shortfall: s.shortfall.map(|f| f.name().to_string()),
         }
     }
 }

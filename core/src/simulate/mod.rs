@@ -100,7 +100,7 @@ pub mod vec3;
 use crate::contour::Contour;
 use crate::error::Result;
 pub use options::SimulateOptions;
-pub use stats::Stats;
+pub use stats::{Shortfall, Stats};
 
 /// A solved D-form: a closed triangle mesh. Its first vertices are the seam vertices; a
 /// non-convex pair's answer from the sheet path has interior vertices after them.
@@ -149,6 +149,7 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
             sim = sheet;
         }
     }
+    stats::judge(&mut sim, !convex);
     sim.stats.ms = timer.elapsed_ms();
     Ok(sim)
 }

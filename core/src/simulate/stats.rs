@@ -36,6 +36,90 @@ pub struct Stats {
     pub flips: usize,
     pub converged: bool,
     pub ms: f64,
+    /// Largest bend inside a piece, radians: the angle between the normals of two triangles of
+    /// the same piece that share an edge (0 flat, π folded back), on the returned mesh.
+    pub max_bend: f64,
+    /// Why an answer is not `converged` ([`Shortfall`]); `None` when it is.
+    pub shortfall: Option<Shortfall>,
+}
+
+/// What keeps an unconverged answer from being the D-form, the first of these that holds on the
+/// returned mesh, so that a host can say what is wrong with the preview instead of one message
+/// for all (the panel told a student that an L glued to a circle "stretches up to 0 %").
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shortfall {
+    /// Some edge is more than [`crate::simulate::sheet::STRAIN_TARGET`] off its flat length:
+    /// the pieces would have to stretch into this shape.
+    Stretch,
+    /// Two triangles cross: the sheets pass through each other.
+    Crossing,
+    /// Isometric and embedded, but a non-convex pair's mesh bends by more than
+    /// [`crate::simulate::checks::FOLD_BEND`] inside a piece: the sheet is creased there (the
+    /// circle across its inside, beside a reflex corner of the other piece; between the
+    /// arms of a star).
+    Fold,
+    /// None of the above: the solve stopped within its budget before its length equations were
+    /// met to the solver's own tolerance, or the mesh is not a 2-manifold.
+    Unsettled,
+}
+
+impl Shortfall {
+    /// The name the JSON contract uses.
+    pub fn name(self) -> &'static str {
+        match self {
+            Shortfall::Stretch => "stretch",
+            Shortfall::Crossing => "crossing",
+            Shortfall::Fold => "fold",
+            Shortfall::Unsettled => "unsettled",
+        }
+    }
+}
+
+/// Fills `max_bend` and `shortfall` of `sim` from its mesh; `folds` says whether a sharp bend
+/// counts against it (a non-convex pair's; a convex pair's sharp chords are edges of its
+/// Alexandrov polyhedron).
+pub fn judge(sim: &mut Simulation, folds: bool) {
+    let bend = max_bend_inside(&sim.vertices, &sim.triangles, &sim.piece);
+    sim.stats.max_bend = bend;
+    sim.stats.shortfall = if sim.stats.converged {
+        None
+    } else if sim.stats.max_strain > super::sheet::STRAIN_TARGET {
+        Some(Shortfall::Stretch)
+    } else if super::checks::faces_cross(&sim.vertices, &sim.triangles) {
+        Some(Shortfall::Crossing)
+    } else if folds && bend > super::checks::FOLD_BEND {
+        Some(Shortfall::Fold)
+    } else {
+        Some(Shortfall::Unsettled)
+    };
+}
+
+/// Largest angle between the normals of two triangles of the same piece sharing an edge.
+pub fn max_bend_inside(x: &[V3], triangles: &[[usize; 3]], piece: &[u8]) -> f64 {
+    let mut owner = super::metric::KeyMap::default();
+    let normal = |t: usize| {
+        let [a, b, c] = triangles[t];
+        cross(sub(x[b], x[a]), sub(x[c], x[a]))
+    };
+    let mut worst = 0.0f64;
+    for (t, tri) in triangles.iter().enumerate() {
+        for m in 0..3 {
+            let (i, j) = (tri[m], tri[(m + 1) % 3]);
+            match owner.get(&crate::order::pair_key(j, i)) {
+                Some(&u) if piece[u] == piece[t] => {
+                    let (n1, n2) = (normal(u), normal(t));
+                    if norm(n1) > 0.0 && norm(n2) > 0.0 {
+                        worst = worst.max(norm(cross(n1, n2)).atan2(dot(n1, n2)));
+                    }
+                }
+                Some(_) => {}
+                None => {
+                    owner.insert(crate::order::pair_key(i, j), t);
+                }
+            }
+        }
+    }
+    worst
 }
 
 
@@ -143,6 +227,8 @@ pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
         flips: sol.flips,
         converged: sol.converged,
         ms: 0.0,
+        max_bend: 0.0,
+        shortfall: None,
     };
     Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, stats }
 }

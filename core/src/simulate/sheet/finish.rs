@@ -109,6 +109,8 @@ pub fn simulation(pieces: &SeamPieces, mesh: &SheetMesh, shell: &Shell, x: &[V3]
         flips: 0,
         converged,
         ms: 0.0,
+        max_bend: 0.0,
+        shortfall: None,
     };
     Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, stats }
 }
