@@ -14,6 +14,21 @@ from dformer_mesh import write_obj, write_stl
 from dformer_pieces import describe, read_pieces
 
 
+def shortfall_text(stats):
+    """What an unconverged answer misses (`stats.shortfall` of the core's `simulate`), in words."""
+    why = stats.get("shortfall")
+    if why == "fold":
+        bend = round(stats["maxBend"] * 180 / 3.141592653589793)
+        return (f"Approximate shape: the pieces keep their flat lengths, but one is creased by {bend}° inside it, "
+                "where real material creases; the real D-form will look different there.")
+    if why == "crossing":
+        return "Approximate shape: the pieces pass through each other in it; the real D-form will look different."
+    if why == "unsettled":
+        return f"The solver stopped before the shape settled ({stats['iterations']} steps): treat it as approximate."
+    return (f"The solver did not converge in {stats['iterations']} steps (the pieces would have to stretch, "
+            f"up to {stats['maxStrain']:.2%}): treat the shape as approximate.")
+
+
 class Export3D(DformerEffect):
     piece_count = (2, 2)
 
@@ -54,7 +69,7 @@ class Export3D(DformerEffect):
             f"Max edge strain {stats['maxStrain']:.3%}, seam gap {stats['seamGap'] * k:.3g} {unit}.",
         ]
         if not stats["converged"]:
-            lines.append(f"The solver did not converge in {stats['iterations']} steps: treat the shape as approximate.")
+            lines.append(shortfall_text(stats))
 
         def write():
             try:

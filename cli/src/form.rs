@@ -11,7 +11,7 @@ use crate::svgdoc::SvgFile;
 use crate::{meshfile, units};
 use dformer::api::form::{self, FiguresDto, FiguresOptionsDto, FormDto, FormStatsDto};
 use dformer::api::path::PathDto;
-use dformer::api::simulate::{simulate, SimulateDto, SimulateOptionsDto};
+use dformer::api::simulate::{simulate, SimulateDto, SimulateOptionsDto, StatsDto};
 use serde_json::json;
 use std::path::{Path, PathBuf};
 
@@ -137,6 +137,7 @@ pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<(), String> {
                 "volume": f.volume, "litres": f.litres, "mass": f.mass, "density": f.density,
                 "area": st.area, "height": f.height, "width": f.width, "depth": f.depth,
                 "maxStrain": st.max_strain, "converged": st.converged,
+                "maxBendDegrees": st.max_bend.to_degrees(), "shortfall": st.shortfall,
             })
         )
     } else {
@@ -146,10 +147,7 @@ pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<(), String> {
         t += &format!("area       {} {u}²\n", g(st.area));
         t += &format!("extents    height {} {u} × width {} {u} × depth {} {u}\n", g(f.height), g(f.width), g(f.depth));
         t += &format!("strain     {}% at most\n", g(100.0 * st.max_strain));
-        t += &format!(
-            "converged  {}\n",
-            if st.converged { "yes" } else { "no: an approximate shape; the pieces would have to stretch (see strain)" }
-        );
+        t += &format!("converged  {}\n", verdict(st));
         t
     };
     // Everything computed first, then written.
@@ -233,4 +231,18 @@ fn sweep(file: &SvgFile, ids: &[String], a: &FormArgs, n: usize) -> Result<(), S
         eprintln!("wrote {}", path.display());
     }
     Ok(())
+}
+
+/// The `converged` line: yes, or what the approximate shape misses (`stats.shortfall`).
+fn verdict(st: &StatsDto) -> String {
+    match (st.converged, st.shortfall.as_deref()) {
+        (true, _) => "yes".into(),
+        (false, Some("fold")) => format!(
+            "no: an approximate shape; the pieces keep their flat lengths, but one is creased by {}° inside it",
+            g(st.max_bend.to_degrees().round())
+        ),
+        (false, Some("crossing")) => "no: an approximate shape; the pieces pass through each other".into(),
+        (false, Some("unsettled")) => format!("no: an approximate shape; the solver stopped before it settled ({} steps)", st.iterations),
+        (false, _) => "no: an approximate shape; the pieces would have to stretch (see strain)".into(),
+    }
 }

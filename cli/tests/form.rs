@@ -274,3 +274,67 @@ fn test_issue_json_help_lists_simulate() {
         assert!(help.contains(op), "`dformer json --help` does not list {op}:\n{help}");
     }
 }
+
+const L_AND_CIRCLE: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" width="300mm" height="150mm" viewBox="0 0 300 150">
+<path id="a" d="M 10,10 H 90 V 50 H 50 V 90 H 10 Z"/><circle id="b" cx="220" cy="75" r="50.929581789406505"/></svg>"#;
+
+/// The sharpest bend (degrees) between two faces of one OBJ group (a piece) sharing an edge.
+fn max_bend_in_groups(text: &str) -> f64 {
+    let (v, _) = parse_obj(text);
+    let mut group: Vec<Vec<[usize; 3]>> = Vec::new();
+    for line in text.lines() {
+        let p: Vec<&str> = line.split_whitespace().collect();
+        match p.first() {
+            Some(&"g") => group.push(Vec::new()),
+            Some(&"f") => group.last_mut().expect("faces after a group").push([p[1], p[2], p[3]].map(|x| x.parse::<usize>().unwrap() - 1)),
+            _ => {}
+        }
+    }
+    let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    let cross = |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    let mut worst = 0.0f64;
+    for faces in &group {
+        let mut owner = std::collections::HashMap::new();
+        for f in faces {
+            let n = cross(sub(v[f[1]], v[f[0]]), sub(v[f[2]], v[f[0]]));
+            for q in 0..3 {
+                let (i, j) = (f[q], f[(q + 1) % 3]);
+                match owner.get(&(j, i)) {
+                    Some(&m) => {
+                        let c = cross(m, n);
+                        worst = worst.max(dot(c, c).sqrt().atan2(dot(m, n)).to_degrees());
+                    }
+                    None => {
+                        owner.insert((i, j), n);
+                    }
+                }
+            }
+        }
+    }
+    worst
+}
+
+/// `converged  no: … the pieces would have to stretch` was printed for every unconverged form;
+/// an L glued to a circle keeps its flat lengths (strain under 1e-3) but creases the circle, and
+/// is now called creased, by the sharpest bend of the mesh it writes (recomputed here from the
+/// OBJ's piece groups). `--json` gives the same as `shortfall` and `maxBendDegrees`.
+#[test]
+fn test_issue_14_an_l_on_a_circle_is_called_creased_by_its_meshs_sharpest_bend() {
+    let svg = scratch("l-circle.svg", L_AND_CIRCLE);
+    let s = svg.to_str().unwrap();
+    let obj = out_path("l-circle.obj");
+    let (code, table, err) = dformer(&["form", s, "-o", obj.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let bend = max_bend_in_groups(&std::fs::read_to_string(&obj).unwrap());
+    assert!(bend > 90.0, "precondition: a creased form, sharpest bend {bend:.1}°");
+    let line = table.lines().find(|l| l.starts_with("converged")).expect("a converged line");
+    let said: f64 = line.split("creased by ").nth(1).and_then(|t| t.split('°').next()).and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("wanted the crease and its angle, got: {line}"));
+    assert!((said - bend).abs() <= 1.0, "wanted the mesh's {bend:.1}°, got: {line}");
+    assert!(!line.contains("stretch"), "{line}");
+    let j = json_of(&["form", s, "--json"]);
+    assert_eq!(j["shortfall"], "fold");
+    assert!(j["maxStrain"].as_f64().unwrap() <= 1e-3, "{j}");
+    // The OBJ rounds coordinates, so the bend recomputed from it is the mesh's to about 1e-4°.
+    assert!((j["maxBendDegrees"].as_f64().unwrap() - bend).abs() <= 1e-2, "wanted {bend}° from the OBJ: {j}");
+}

@@ -3,6 +3,7 @@ volume and area in the message are those of the written mesh (recomputed here fr
 volume by the divergence theorem, sum of signed tetrahedra; area by cross products)."""
 
 import io
+import math
 import os
 import re
 import struct
@@ -101,3 +102,62 @@ class Export3dFiles(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+def read_obj_groups(path):
+    """Vertices, and the faces of each OBJ group (one group per piece)."""
+    verts, groups = [], {}
+    group = None
+    with open(path, encoding="utf-8") as fh:
+        for line in fh:
+            parts = line.split()
+            if parts and parts[0] == "v":
+                verts.append(tuple(map(float, parts[1:4])))
+            elif parts and parts[0] == "g":
+                group = " ".join(parts[1:])
+            elif parts and parts[0] == "f":
+                groups.setdefault(group, []).append(tuple(int(p.split("/")[0]) - 1 for p in parts[1:4]))
+    return verts, groups
+
+
+def max_bend_degrees(verts, faces):
+    """Largest angle between the normals of two faces sharing an edge."""
+    def normal(f):
+        a, b, c = (verts[i] for i in f)
+        u, v = [b[k] - a[k] for k in range(3)], [c[k] - a[k] for k in range(3)]
+        return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+    owner, worst = {}, 0.0
+    for f in faces:
+        for q in range(3):
+            i, j = f[q], f[(q + 1) % 3]
+            g = owner.get((j, i))
+            if g is None:
+                owner[(i, j)] = f
+                continue
+            n1, n2 = normal(g), normal(f)
+            cross = (n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2], n1[0] * n2[1] - n1[1] * n2[0])
+            dot = sum(x * y for x, y in zip(n1, n2))
+            worst = max(worst, math.degrees(math.atan2(math.sqrt(sum(x * x for x in cross)), dot)))
+    return worst
+
+
+class Export3dCreased(unittest.TestCase):
+    """The message said "did not converge: treat the shape as approximate" for every such shape;
+    an L glued to a circle keeps its flat lengths but creases the circle, and is now called
+    creased, by the sharpest bend of the written mesh (recomputed here from the OBJ's groups)."""
+
+    def test_an_l_on_a_circle_is_reported_creased_by_the_written_meshs_sharpest_bend(self):
+        path = os.path.join(tempfile.mkdtemp(prefix="dformer-3d-"), "l.obj")
+        err = io.StringIO()
+        with redirect_stderr(err):
+            Export3D().run([os.path.join(DATA, "l_circle_mm.svg"), "--id=A", "--id=B", f"--file={path}"], output=io.BytesIO())
+        message = err.getvalue()
+        verts, groups = read_obj_groups(path)
+        self.assertEqual(len(groups), 2, f"wanted one OBJ group per piece, got {list(groups)}")
+        bend = max(max_bend_degrees(verts, faces) for faces in groups.values())
+        self.assertGreater(bend, 90.0, f"precondition: a creased form, sharpest bend {bend:.1f}°")
+        found = re.search(r"creased by (\d+)°", message)
+        self.assertIsNotNone(found, message)
+        self.assertLessEqual(abs(int(found.group(1)) - bend), 1.0, f"wanted the mesh's {bend:.1f}°, got: {message}")
+        self.assertNotIn("stretch", message)
+

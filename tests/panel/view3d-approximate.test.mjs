@@ -54,6 +54,23 @@ test('3D tab: a form the solver cannot realize is clearly marked approximate; a 
   await star.page.screenshot({ path: artifactPath('browser-3d-approximate.png') });
   await star.page.close();
 
+  // An L (50 mm square with a 25 mm notch, 200 mm around) + circle: the sheet path keeps both
+  // pieces' flat lengths but creases the circle beside the L's reflex corner. The warning used to
+  // say the pieces "stretch up to 0 %"; it now says the form is creased, by the exported mesh's
+  // own sharpest bend.
+  const ell = await open3d('l-circle.svg', '<path d="M30,50 h50 v25 h-25 v25 h-25 z"/>');
+  const ellArea = 2500 - 625 + CIRCLE_AREA;
+  assert.ok(Math.abs(ell.area - ellArea) < 0.005 * ellArea && ell.bend > Math.PI / 2,
+    `precondition: an isometric but creased form (mesh area ${ell.area.toFixed(0)} vs flat ${ellArea.toFixed(0)} mm², ` +
+    `largest bend inside a piece ${(ell.bend * 180 / Math.PI).toFixed(1)}°)`);
+  const ellWarn = await ell.page.textContent('#warn3d');
+  assert.ok(await ell.page.locator('#warn3d').isVisible(), 'a creased form is not the real D-form either');
+  assert.doesNotMatch(ellWarn, /stretch/, 'the pieces do not stretch in it');
+  const said = ellWarn.match(/bent sharply, by up to (\d+)°/);
+  assert.ok(said, `wanted the crease and its angle, got: ${ellWarn}`);
+  assert.ok(Math.abs(Number(said[1]) - (ell.bend * 180) / Math.PI) <= 1, `wanted the mesh's ${(ell.bend * 180 / Math.PI).toFixed(1)}°, got: ${ellWarn}`);
+  await ell.page.close();
+
   // 80 × 20 mm rectangle + circle: realized, its mesh area is the flat pieces' area; no warning.
   const rect = await open3d('rect-circle.svg', '<rect x="30" y="65" width="80" height="20"/>');
   const flat2 = 1600 + CIRCLE_AREA;

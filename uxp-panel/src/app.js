@@ -510,17 +510,37 @@
   }
 
   /**
-   * The solver may stop without a form in which both pieces keep their flat shape (near-square
-   * rectangles on a circle, spiky outlines): what it drew is then only an approximation, often flat
-   * or folded, and its volume, area and mesh are not those of the real D-form. Says so plainly.
+   * The solver may stop without the real D-form, and says why (stats.shortfall): the pieces would
+   * have to stretch (near-square rectangles on a circle, spiky outlines), the sheets pass through
+   * each other, or both keep their flat shape but one is creased (an L or a drawn heart on a
+   * circle: the circle bends sharply along a line). Each gets its own plain words: a creased form
+   * is no stretched guess, and telling a student it "stretches up to 0 %" explained nothing.
    */
+  function approximateText(st) {
+    var tail = ' OBJ/STL export this approximate shape.';
+    if (st.shortfall === 'fold') {
+      return '⚠ Approximate preview: both pieces keep their flat shape here, but one is bent sharply, by up to ' +
+        (st.maxBend * 180 / Math.PI).toFixed(0) + '°, along a line inside it, where real material creases. The real D-form will ' +
+        'look different there: it may crease, or take a smoother shape the solver did not find. Rounding sharp or deeply ' +
+        'concave parts of the outline usually avoids it.' + tail;
+    }
+    if (st.shortfall === 'unsettled') {
+      return '⚠ Approximate preview: the solver stopped before this shape settled (after ' + st.iterations + ' steps). The real ' +
+        'D-form will look different; the volume and area are rough guesses.' + tail;
+    }
+    if (st.shortfall === 'crossing') {
+      return '⚠ Approximate preview: in the shape the solver found, the two pieces pass through each other, which real ' +
+        'material cannot. The real D-form will look different; the volume and area are rough guesses.' + tail;
+    }
+    return '⚠ Approximate preview: the solver found no form in which both pieces keep their flat shape ' +
+      '(they stretch up to ' + (st.maxStrain * 100).toFixed(st.maxStrain < 0.01 ? 2 : 0) + ' % here). The real D-form will look ' +
+      'different; the volume and area are rough guesses, and OBJ/STL export this approximate shape (it may not be a clean closed solid).';
+  }
   function setApproximate(st) {
     var el = $('#warn3d');
     var approx = !!st && !st.converged;
     el.hidden = !approx;
-    el.textContent = approx ? '⚠ Approximate preview: the solver found no form in which both pieces keep their flat shape ' +
-      '(they stretch up to ' + (st.maxStrain * 100).toFixed(0) + ' % here). The real D-form will look different; the volume and area ' +
-      'are rough guesses, and OBJ/STL export this approximate shape (it may not be a clean closed solid).' : '';
+    el.textContent = approx ? approximateText(st) : '';
     document.body.dataset.approximate = approx ? 'yes' : '';
   }
   function set3dMessage(text, ok, st) {
