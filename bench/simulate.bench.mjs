@@ -138,7 +138,7 @@ for (const [name, a] of [['Pebble + circle (the browser app sample)', pebble], [
   const ms = performance.now() - t0;
   const s = r.stats;
   console.log(`== ${name} (WASM, non-convex, 256 seam vertices) ==`);
-  console.log(`  time ${ms.toFixed(1)} ms (≤ 1000 ms) ${mark(ms <= 1000)}   converged ${s.converged} ${mark(s.converged)}   max strain ${s.maxStrain.toExponential(2)} sharpest bend inside a piece ${maxBend(r.vertices, r.triangles, r.piece).toFixed(0)}° (≤ 90, from the mesh) iterations ${s.iterations}`);
+  console.log(`  time ${ms.toFixed(1)} ms (≤ 1000 ms) ${mark(ms <= 1000)}   converged ${s.converged} ${mark(s.converged)}   max strain ${s.maxStrain.toExponential(2)} sharpest bend inside a piece ${maxBend(r.vertices, r.triangles, r.piece).toFixed(0)}° (≤ 90, from the mesh) iterations ${s.iterations}${s.converged ? '' : `   shortfall ${s.shortfall}`}`);
   const floor = samplingFloor(r);
   console.log(`  sampling floor: no mesh on these seam samples gets below max edge strain ${floor.toExponential(2)} (≤ 1e-3 needed) ${mark(floor <= 1e-3)}${floor > 1e-3 ? ' — the samples, not the solver, rule out a converged answer' : ''}`);
 }
