@@ -19,15 +19,8 @@ DATA = os.path.join(support.HERE, "data", "svg")
 
 
 def read_obj(path):
-    verts, faces = [], []
-    with open(path, encoding="utf-8") as fh:
-        for line in fh:
-            parts = line.split()
-            if parts and parts[0] == "v":
-                verts.append(tuple(map(float, parts[1:4])))
-            elif parts and parts[0] == "f":
-                faces.append(tuple(int(p) - 1 for p in parts[1:4]))
-    return verts, faces
+    verts, groups = read_obj_groups(path)
+    return verts, [f for faces in groups.values() for f in faces]
 
 
 def read_stl(path):
