@@ -3,6 +3,7 @@
 (the core's `simulate`), saved as OBJ or STL in the chosen unit, with its volume and area
 reported. The document is not changed."""
 
+import math
 import os
 
 import inkex
@@ -18,7 +19,7 @@ def shortfall_text(stats):
     """What an unconverged answer misses (`stats.shortfall` of the core's `simulate`), in words."""
     why = stats.get("shortfall")
     if why == "fold":
-        bend = round(stats["maxBend"] * 180 / 3.141592653589793)
+        bend = round(math.degrees(stats["maxBend"]))
         return (f"Approximate shape: the pieces keep their flat lengths, but one is creased by {bend}° inside it, "
                 "where real material creases; the real D-form will look different there.")
     if why == "crossing":
