@@ -9,6 +9,7 @@
 //! [`SeamPieces::every`]: crate::simulate::seam::SeamPieces::every
 
 use super::glued::SheetMesh;
+use crate::form::place::barycentric;
 use crate::simulate::vec3::{map_affine, V3};
 
 /// Side of a cell of the point-location grid, in coarse triangles per cell (about).
@@ -93,18 +94,6 @@ impl Grid {
     }
 }
 
-/// Barycentric coordinate least in `t` of `q` (≥ 0 inside), `None` for a degenerate triangle.
-fn least_barycentric(t: &[[f64; 2]; 3], q: [f64; 2]) -> Option<f64> {
-    let [a, b, c] = *t;
-    let det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    if det == 0.0 || !det.is_finite() {
-        return None;
-    }
-    let w1 = ((q[0] - a[0]) * (c[1] - a[1]) - (q[1] - a[1]) * (c[0] - a[0])) / det;
-    let w2 = ((b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])) / det;
-    Some((1.0 - w1 - w2).min(w1).min(w2))
-}
-
 /// The shape `x` of mesh `coarse` carried onto mesh `fine` (see the module docs). `fine.n`
 /// must be a multiple of `coarse.n`; `None` otherwise or when a piece has no triangle with area.
 pub fn carry(coarse: &SheetMesh, x: &[V3], fine: &SheetMesh) -> Option<Vec<V3>> {
@@ -129,7 +118,7 @@ pub fn carry(coarse: &SheetMesh, x: &[V3], fine: &SheetMesh) -> Option<Vec<V3>> 
                 continue;
             }
             let q = fine.flat[p][v];
-            let best = grid.near(q).into_iter().filter_map(|t| least_barycentric(&tris[t], q).map(|b| (b, t))).max_by(|a, b| a.0.total_cmp(&b.0));
+            let best = grid.near(q).into_iter().filter_map(|t| barycentric(&tris[t], q).map(|b| (b[0].min(b[1]).min(b[2]), t))).max_by(|a, b| a.0.total_cmp(&b.0));
             let Some((_, t)) = best else { return None };
             let y = map_affine(tris[t], faces[t].map(|i| x[i]), q)?;
             let h = hits[v] as f64;
