@@ -236,7 +236,7 @@ fn test_issue_14_five_lobed_twins_are_solved() {
     for (name, a) in [("pebble", shapes::pebble()), ("kidney", shapes::kidney()), ("five-lobed", shapes::five_lobed()), ("blob", shapes::blob())] {
         let pieces = Glue::new(&a, &shapes::circle_for(&a), 0.0).expect("glue").sample(256);
         let mesh = sheet::SheetMesh::new(&pieces, sheet::INTERIOR_EDGE).expect("mesh");
-        let start = sheet::twin_start(&pieces, &mesh);
+        let start = sheet::twin_start(&pieces, &mesh, true);
         let Some((_, coarse, sol)) = start else { panic!("{name}: wanted the twins' polyhedron, got none") };
         // The polyhedron is isometric to the twins' sample polygons (their own edge lengths), up
         // to what no polyhedron can do better than: a seam edge's two flat lengths (chords of

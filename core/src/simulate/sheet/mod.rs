@@ -221,7 +221,7 @@ pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, sched
 /// of a circle's turning mixed in, or rounder ones ([`TWIN_CIRCLE_SHARES`]), solved on the seam
 /// samples or, when those cannot be solved within [`TWIN_BUDGET`], on every other one, every
 /// fourth, every eighth ([`TWIN_STRIDES`]), and last on the coarsest with a larger budget
-/// ([`TWIN_RESCUE_BUDGET`]). Returns the homotopy, the sample polygons solved and
+/// ([`TWIN_RESCUE_BUDGET`]) when `rescue` is set. Returns the homotopy, the sample polygons solved and
 /// their polyhedron: the first convex one, else the first isometric one the convex path found
 /// (dented: the rounded star's twins with a circle have no other within reach at any stride,
 /// and from a dented twin the star's sheet ends within 1.5e-3 strain, no crossing, where from
@@ -231,7 +231,7 @@ pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, sched
 /// the fallback start (the five-lobed shape with a circle ended with crossing sheets), and so
 /// did smooth outlines through the twins solved as curves (other equilibria at 128 and 256
 /// seam vertices, 2 % apart).
-pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh) -> Option<(homotopy::Homotopy, SeamPieces, Solution)> {
+pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool) -> Option<(homotopy::Homotopy, SeamPieces, Solution)> {
     let strides: Vec<usize> = TWIN_STRIDES.iter().copied().filter(|&s| pieces.n % s == 0 && pieces.n / s >= super::seam::COARSEST).collect();
     let mut dented = None;
     // The twins tried so far (each an embedding of both meshes), for the last try below.
@@ -249,7 +249,7 @@ pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh) -> Option<(homotopy::Ho
         }
         built.push((h, twin));
     }
-    if dented.is_some() {
+    if dented.is_some() || !rescue {
         return dented;
     }
     // None within the budget: the coarsest samples, patiently, before the fallback start.
@@ -260,12 +260,13 @@ pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh) -> Option<(homotopy::Ho
     })
 }
 
-/// The homotopy from convex twins ([`homotopy`]) on `mesh` itself: the twins' polyhedron
+/// The homotopy from convex twins ([`homotopy`]) on `mesh` itself (`rescue`: see
+/// [`twin_start`]): the twins' polyhedron
 /// carried onto it and relaxed through [`HOMOTOPY_STEPS`] blends of the rest lengths. Returns
 /// the shell (its rest lengths the pieces' at the end), the shape at the last step and the
 /// steps taken, the twins' solve included. `None` when no twin pair can be built and solved.
-fn homotopy_on(pieces: &SeamPieces, mesh: &SheetMesh, report: &mut Reporter) -> Option<(Shell, Vec<V3>, usize)> {
-    let (h, coarse, sol) = twin_start(pieces, mesh)?;
+fn homotopy_on(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool, report: &mut Reporter) -> Option<(Shell, Vec<V3>, usize)> {
+    let (h, coarse, sol) = twin_start(pieces, mesh, rescue)?;
     let twin_flat = h.twin_flat();
     let mut x = start::lift_onto([&coarse.flat[0].pts, &coarse.flat[1].pts], &sol, mesh, &twin_flat);
     let mut shell = mesh.shell();
@@ -293,7 +294,9 @@ pub const COARSE_MIN: usize = 128;
 /// seam sample meshed with interior edges as many times longer (the same mesh in seam steps,
 /// about a third of the vertices), and its last shape carried onto `mesh` ([`refine::carry`]),
 /// where the thinning goes on. `None` below [`COARSE_MIN`] seam samples on the coarse level or
-/// when its twins cannot be solved.
+/// when its twins cannot be solved within [`TWIN_BUDGET`]: the coarse level is a shortcut, so it
+/// gets no rescue (the rounded star's coarse twins took 60–150 ms native to fail with one, 40–70
+/// without, before the fine mesh's twins solved).
 ///
 /// The homotopy is a thick sheet's path (a few percent strain, smooth), which the coarse mesh
 /// follows as well as the fine one: at 256 seam vertices the Pebble, blob, kidney and five lobes
@@ -313,7 +316,7 @@ pub fn coarse_homotopy(pieces: &SeamPieces, mesh: &SheetMesh, report: &mut Repor
     }
     let level = pieces.every(COARSE_STRIDE);
     let coarse = SheetMesh::new(&level, INTERIOR_EDGE * COARSE_STRIDE as f64)?;
-    let (_, x, steps) = homotopy_on(&level, &coarse, report)?;
+    let (_, x, steps) = homotopy_on(&level, &coarse, false, report)?;
     Some((refine::carry(&coarse, &x, mesh)?, steps))
 }
 
@@ -323,7 +326,7 @@ pub fn coarse_homotopy(pieces: &SeamPieces, mesh: &SheetMesh, report: &mut Repor
 pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, budget: usize, report: &mut Reporter) -> Option<(Shell, Relaxed)> {
     let (mut shell, x, steps) = match coarse_homotopy(pieces, mesh, report) {
         Some((x, steps)) => (mesh.shell(), x, steps),
-        None => homotopy_on(pieces, mesh, report)?,
+        None => homotopy_on(pieces, mesh, true, report)?,
     };
     let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
     let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
