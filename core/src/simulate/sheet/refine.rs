@@ -62,35 +62,25 @@ impl Grid {
         (f(q[0], self.origin[0], self.cols), f(q[1], self.origin[1], self.rows))
     }
 
-    /// Candidate triangles for `q`: those of its cell and, ring by ring, of the cells around it
-    /// until some are found (a point just off the coarse polygon may fall in an empty cell).
+    /// Candidate triangles for `q`: those of the cells within one ring beyond the first ring
+    /// around its cell that holds any (a point just off the coarse polygon may fall in an empty
+    /// cell; the ring beyond lets a point near a cell's edge see its neighbours too).
     fn near(&self, q: [f64; 2]) -> Vec<usize> {
         let (c, r) = self.at(q);
-        for ring in 0..self.cols.max(self.rows) {
+        let within = |ring: usize| {
             let mut out = Vec::new();
-            let (r0, r1) = (r.saturating_sub(ring), (r + ring).min(self.rows - 1));
-            let (c0, c1) = (c.saturating_sub(ring), (c + ring).min(self.cols - 1));
-            for rr in r0..=r1 {
-                for cc in c0..=c1 {
+            for rr in r.saturating_sub(ring)..=(r + ring).min(self.rows - 1) {
+                for cc in c.saturating_sub(ring)..=(c + ring).min(self.cols - 1) {
                     out.extend_from_slice(&self.cells[rr * self.cols + cc]);
                 }
             }
-            if !out.is_empty() {
-                // One ring more, so that a point near a cell's edge sees its neighbours too.
-                let (r0, r1) = (r0.saturating_sub(1), (r1 + 1).min(self.rows - 1));
-                let (c0, c1) = (c0.saturating_sub(1), (c1 + 1).min(self.cols - 1));
-                out.clear();
-                for rr in r0..=r1 {
-                    for cc in c0..=c1 {
-                        out.extend_from_slice(&self.cells[rr * self.cols + cc]);
-                    }
-                }
-                out.sort_unstable();
-                out.dedup();
-                return out;
-            }
-        }
-        Vec::new()
+            out
+        };
+        let Some(ring) = (0..self.cols.max(self.rows)).find(|&k| !within(k).is_empty()) else { return Vec::new() };
+        let mut out = within(ring + 1);
+        out.sort_unstable();
+        out.dedup();
+        out
     }
 }
 
