@@ -36,6 +36,27 @@ pub fn max_edge_strain(s: &Simulation) -> f64 {
     worst
 }
 
+/// The seam samples' floor: the largest `(c₂ − c₁)/(c₁ + c₂)` over seam edges whose two flat
+/// lengths (one per piece, read from `flat`) are `c₁ < c₂`. No realization of these flat
+/// triangles has a smaller [`max_edge_strain`]: one 3D length is strained by at least that
+/// against one of the two.
+pub fn seam_floor(s: &Simulation) -> f64 {
+    let n = s.seam.len();
+    let next: HashMap<usize, usize> = (0..n).map(|k| (s.seam[k], s.seam[(k + 1) % n])).collect();
+    let mut lengths: HashMap<(usize, usize), [f64; 2]> = HashMap::new();
+    for (t, tri) in s.triangles.iter().enumerate() {
+        for (a, b) in [(0, 1), (1, 2), (2, 0)] {
+            let (i, j) = (tri[a], tri[b]);
+            if next.get(&i) != Some(&j) && next.get(&j) != Some(&i) {
+                continue;
+            }
+            let f = s.flat[t];
+            lengths.entry((i.min(j), i.max(j))).or_insert([0.0; 2])[s.piece[t] as usize] = (f[a][0] - f[b][0]).hypot(f[a][1] - f[b][1]);
+        }
+    }
+    lengths.values().filter(|c| c[0] > 0.0 && c[1] > 0.0).map(|c| (c[0] - c[1]).abs() / (c[0] + c[1])).fold(0.0, f64::max)
+}
+
 /// Whether the mesh is a closed, consistently oriented 2-manifold of genus 0: every directed
 /// edge once and its reverse once, every vertex's fan a single cycle, V − E + F = 2.
 pub fn closed_manifold(s: &Simulation) -> Result<(), String> {

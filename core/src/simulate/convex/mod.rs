@@ -353,12 +353,14 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
 /// subpolygons down to [`crate::simulate::seam::COARSEST`]; the quick pass, then the patient one.
 /// `None` unless the finest level converged to a good (convex, undented) branch.
 pub fn solve_samples(pieces: &SeamPieces, cap: usize) -> Option<Solution> {
-    solve_samples_isometric(pieces, cap).and_then(|(s, good)| good.then_some(s))
+    solve_samples_isometric(pieces, cap, 0.0).and_then(|(s, good)| good.then_some(s))
 }
 
 /// [`solve_samples`], also returning a converged branch that is not good (isometric but dented
-/// or not convex as a whole), with whether it is good.
-pub fn solve_samples_isometric(pieces: &SeamPieces, cap: usize) -> Option<(Solution, bool)> {
+/// or not convex as a whole), with whether it is good; and, when `near` is positive, the best
+/// branch that did not converge but whose largest edge strain is within `near` (not good, its
+/// `converged` false): a start for what relaxes it further, not an answer.
+pub fn solve_samples_isometric(pieces: &SeamPieces, cap: usize, near: f64) -> Option<(Solution, bool)> {
     let mut levels = vec![pieces.n];
     while levels[levels.len() - 1] % 2 == 0 && levels[levels.len() - 1] / 2 >= super::seam::COARSEST {
         levels.push(levels[levels.len() - 1] / 2);
@@ -372,5 +374,6 @@ pub fn solve_samples_isometric(pieces: &SeamPieces, cap: usize) -> Option<(Solut
         best = ladder(&samples, &levels, Patience { cap, ..PATIENT }, &mut steps).ok()?;
     }
     let (x, tri, converged, good) = best?;
-    converged.then_some((Solution { x, tri, iterations: steps.0, flips: steps.1, converged }, good))
+    let close = || near > 0.0 && max_strain(&x, &bars(&samples[samples.len() - 1], &tri)) <= near;
+    (converged || close()).then_some((Solution { x, tri, iterations: steps.0, flips: steps.1, converged }, good && converged))
 }

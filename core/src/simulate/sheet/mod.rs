@@ -131,6 +131,20 @@ pub const START_BUDGET: usize = 1500;
 pub const TWIN_BUDGET: usize = 500;
 pub const TWIN_STRIDES: [usize; 4] = [1, 2, 4, 8];
 
+/// Largest edge strain of a twin polyhedron the convex path did not converge on that still
+/// starts the homotopy ([`twin_start`]): the homotopy's thick sheet ([`HOMOTOPY_KB`]) is strained
+/// by percents, so a start this close to isometric starts it as well as an exact one. The rounded
+/// star's twins with a circle end within 3e-4 in 500 steps at every share on every fourth of 128
+/// seam samples, and never converge, in 8,000 steps at any stride either: the convex path's
+/// flips do not settle (up to twice as many flips as steps). At 128 seam vertices no
+/// twin of it was solved, and from the fallback start it ended 28 % strained, folded back
+/// (174°) at 1.57e5 mm³ against 2.13e5 at 256; with such a start it ends at 5.2e-3 (its seam
+/// samples' floor there is 4e-3) and 2.08e5 mm³. At 256 the coarse level's twins now start it,
+/// which its own shortcut ([`coarse_homotopy`]) had missed: 0.54–0.62 s native instead of
+/// 0.96–1.2. Every other pair of the tests and the bench keeps its start, and its answer bit
+/// for bit: its twins converge before any near one is met (the same from 3e-4 to 3e-3 here).
+pub const TWIN_NEAR: f64 = 1e-3;
+
 /// Step budget of the last try at the twins, on the coarsest of [`TWIN_STRIDES`] only, when
 /// none was solved within [`TWIN_BUDGET`]. The rounded star's twins with a circle are solved,
 /// dented, only at stride 8 and only near the budget: 500 steps were enough for the star but
@@ -184,6 +198,12 @@ pub struct Relaxed {
 /// target is only a waypoint to the next. One near or within it ([`POLISH_NEAR`]) is relaxed on
 /// to [`STAGE_RTOL`] and then judged.
 ///
+/// A stage is polished only when the promise can be kept at all: when the seam samples' floor
+/// ([`Shell::strain_floor`]) is above [`STRAIN_TARGET`], no stage is within it, and the polish
+/// would only trade time for a strain that stays above it (the rounded star with a circle,
+/// floor 1.07e-3 at 256 seam vertices: its last stage's polish took 270 of 960 ms native to go
+/// from 1.4e-3 to 1.32e-3).
+///
 /// It also stops, unconverged, where thinner stages cannot help: at a stage within the strain
 /// target that is unsound (a fold or a crossing only gets sharper as the sheet gets thinner),
 /// and at one still above [`STALL_ABOVE`] times the target whose sheets cross or whose strain
@@ -195,12 +215,13 @@ pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, sched
     let mut lambda: f64 = 1e-3;
     let mut out = Relaxed { x: x.clone(), steps: 0, max_strain: shell.max_strain(&x), converged: false };
     let mut before = f64::INFINITY;
+    let reachable = shell.strain_floor() <= STRAIN_TARGET;
     for &beta in schedule {
         let kb = beta * radius * radius;
         lambda = lambda.min(1e-3);
         steps += shell.minimize(&mut x, kb, STAGE_STEPS.min(budget.saturating_sub(steps)), WAYPOINT_RTOL, &mut lambda);
         let mut strain = shell.max_strain(&x);
-        if strain <= POLISH_NEAR * STRAIN_TARGET {
+        if reachable && strain <= POLISH_NEAR * STRAIN_TARGET {
             steps += shell.minimize(&mut x, kb, STAGE_STEPS.min(budget.saturating_sub(steps)), STAGE_RTOL, &mut lambda);
             strain = shell.max_strain(&x);
         }
@@ -222,10 +243,11 @@ pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, sched
 /// samples or, when those cannot be solved within [`TWIN_BUDGET`], on every other one, every
 /// fourth, every eighth ([`TWIN_STRIDES`]), and last on the coarsest with a larger budget
 /// ([`TWIN_RESCUE_BUDGET`]) when `rescue` is set. Returns the homotopy, the sample polygons solved and
-/// their polyhedron: the first convex one, else the first isometric one the convex path found
-/// (dented: the rounded star's twins with a circle have no other within reach at any stride,
-/// and from a dented twin the star's sheet ends within 1.5e-3 strain, no crossing, where from
-/// the fallback start it ended 11–18 % strained and through itself).
+/// their polyhedron: the first convex one, else the first isometric one the convex path found,
+/// or within [`TWIN_NEAR`] of isometric (dented: the rounded star's twins with a circle have no
+/// other within reach at any stride, and from a dented twin the star's sheet ends within
+/// 1.5e-3 strain, no crossing, where from the fallback start it ended 11–18 % strained and
+/// through itself).
 ///
 /// Starting from the convex path's approximation of twins it could not solve did worse than
 /// the fallback start (the five-lobed shape with a circle ended with crossing sheets), and so
@@ -241,7 +263,7 @@ pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool) -> Option
         let twin = h.twin_pieces(pieces);
         for &stride in &strides {
             let coarse = twin.every(stride);
-            match super::convex::solve_samples_isometric(&coarse, TWIN_BUDGET) {
+            match super::convex::solve_samples_isometric(&coarse, TWIN_BUDGET, TWIN_NEAR) {
                 Some((sol, true)) => return Some((h, coarse, sol)),
                 Some((sol, false)) if dented.is_none() => dented = Some((h.clone(), coarse, sol)),
                 _ => {}
@@ -256,7 +278,7 @@ pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool) -> Option
     let &stride = strides.last()?;
     built.into_iter().find_map(|(h, twin)| {
         let coarse = twin.every(stride);
-        super::convex::solve_samples_isometric(&coarse, TWIN_RESCUE_BUDGET).map(|(sol, _)| (h, coarse, sol))
+        super::convex::solve_samples_isometric(&coarse, TWIN_RESCUE_BUDGET, TWIN_NEAR).map(|(sol, _)| (h, coarse, sol))
     })
 }
 

@@ -126,6 +126,28 @@ impl Shell {
         self.edges.iter().map(|e| (norm(sub(x[e.j], x[e.i])) / e.rest - 1.0).abs()).fold(0.0, f64::max)
     }
 
+    /// The least [`Shell::max_strain`] of any shape: an edge with two membrane terms (a seam
+    /// edge, one flat length per piece, `L₁ < L₂`) is strained by at least
+    /// `(L₂ − L₁)/(L₁ + L₂)` against one of them, whatever its length (the least is at the
+    /// harmonic mean `2L₁L₂/(L₁ + L₂)`). The seam samples' floor ([`crate::simulate::density`]).
+    pub fn strain_floor(&self) -> f64 {
+        let mut first = KeyMap::default();
+        let mut floor: f64 = 0.0;
+        for (k, e) in self.edges.iter().enumerate() {
+            let key = pair_key(e.i.min(e.j), e.i.max(e.j));
+            match first.get(&key) {
+                Some(&m) => {
+                    let (a, b) = (self.edges[m].rest, e.rest);
+                    floor = floor.max((a - b).abs() / (a + b));
+                }
+                None => {
+                    first.insert(key, k);
+                }
+            }
+        }
+        floor
+    }
+
     /// `Jᵀr` at `x`, and `JᵀJ`'s diagonal and pair blocks when `blocks` is given.
     fn assemble(&self, x: &[V3], kb: f64, mut blocks: Option<(&mut [B3], &mut [B3])>) -> Vec<f64> {
         let mut g = vec![0.0; 3 * self.n];
@@ -256,5 +278,37 @@ impl Shell {
             }
         }
         steps
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A triangle whose edge 0–1 is a seam edge with flat lengths 10 and 10.5 (one per piece).
+    fn seam_triangle() -> Shell {
+        let e = |i, j, rest, piece| Edge { i, j, rest, piece };
+        Shell::new(3, vec![e(0, 1, 10.0, 0), e(1, 2, 10.0, 0), e(2, 0, 10.0, 0), e(1, 0, 10.5, 1)], Vec::new())
+    }
+
+    #[test]
+    fn the_strain_floor_is_the_least_strain_of_a_seam_edge_with_two_flat_lengths() {
+        let shell = seam_triangle();
+        let want = 0.5 / 20.5;
+        let got = shell.strain_floor();
+        assert!((got - want).abs() < 1e-15, "wanted the floor (L₂ − L₁)/(L₁ + L₂) = {want:e}, got {got:e}");
+        // Against the strain of shapes: edge 0–1 at lengths around the harmonic mean, the other
+        // two edges at their flat lengths (the apex on the perpendicular bisector).
+        let at = |d: f64| {
+            let h = (100.0 - d * d / 4.0).sqrt();
+            shell.max_strain(&[[0.0, 0.0, 0.0], [d, 0.0, 0.0], [d / 2.0, h, 0.0]])
+        };
+        let harmonic = 2.0 * 10.0 * 10.5 / 20.5;
+        assert!((at(harmonic) - want).abs() < 1e-12, "at the harmonic mean: wanted {want:e}, got {:e}", at(harmonic));
+        for d in [9.9, 10.0, 10.2, 10.3, 10.5, 10.6] {
+            assert!(at(d) >= want, "length {d}: strain {:e} below the floor {want:e}", at(d));
+        }
+        let single = Shell::new(2, vec![Edge { i: 0, j: 1, rest: 3.0, piece: 0 }], Vec::new());
+        assert_eq!(single.strain_floor(), 0.0, "an edge with one flat length can be unstrained");
     }
 }
