@@ -317,8 +317,8 @@ pub const COARSE_MIN: usize = 128;
 /// about a third of the vertices), and its last shape carried onto `mesh` ([`refine::carry`]),
 /// where the thinning goes on. `None` below [`COARSE_MIN`] seam samples on the coarse level or
 /// when its twins cannot be solved within [`TWIN_BUDGET`]: the coarse level is a shortcut, so it
-/// gets no rescue (the rounded star's coarse twins took 60–150 ms native to fail with one, 40–70
-/// without, before the fine mesh's twins solved).
+/// gets no rescue (before [`TWIN_NEAR`] the rounded star's coarse twins took 60–150 ms native to
+/// fail with one, 40–70 without, before the fine mesh's twins solved; now they start it).
 ///
 /// The homotopy is a thick sheet's path (a few percent strain, smooth), which the coarse mesh
 /// follows as well as the fine one: at 256 seam vertices the Pebble, blob, kidney and five lobes
