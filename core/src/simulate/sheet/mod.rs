@@ -249,8 +249,9 @@ pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, sched
 /// 1.5e-3 strain, no crossing, where from the fallback start it ended 11–18 % strained and
 /// through itself).
 ///
-/// Starting from the convex path's approximation of twins it could not solve did worse than
-/// the fallback start (the five-lobed shape with a circle ended with crossing sheets), and so
+/// Starting from the convex path's approximation of twins it could not solve, at whatever
+/// strain, did worse than the fallback start (the five-lobed shape with a circle ended with
+/// crossing sheets; [`TWIN_NEAR`] admits only one within 1e-3 of isometric), and so
 /// did smooth outlines through the twins solved as curves (other equilibria at 128 and 256
 /// seam vertices, 2 % apart).
 pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool) -> Option<(homotopy::Homotopy, SeamPieces, Solution)> {
