@@ -290,9 +290,9 @@ fn test_issue_14_progress_rises_and_ends_at_the_answer() {
 }
 
 /// The star-shaped pillow of the tests below at `n` seam vertices: the sheet's mesh, closed, no
-/// crossing, strained by at most twice its samples' floor (computed from `flat`) and not
-/// folded back, checked from the mesh. Returns it.
-fn assert_star_pillow(a: &Contour, n: usize) -> Simulation {
+/// crossing, strained by at most `at_most` and by at most twice its samples' floor (computed
+/// from `flat`), and not folded back, checked from the mesh. Returns it.
+fn assert_star_pillow(a: &Contour, n: usize, at_most: f64) -> Simulation {
     let s = run(a, &shapes::circle_for(a), 0.0, n, 5000);
     println!("{}", mesh_checks::report(&s));
     assert!(s.vertices.len() > s.seam.len(), "wanted the sheet's mesh, got {} vertices", s.vertices.len());
@@ -300,7 +300,8 @@ fn assert_star_pillow(a: &Contour, n: usize) -> Simulation {
     let crossings = self_intersections(&s, 1e-9);
     assert!(crossings.is_empty(), "wanted no crossing triangles, got {} pairs", crossings.len());
     let (strain, floor) = (max_edge_strain(&s), seam_floor(&s));
-    assert!(strain <= 2.0 * floor.max(1e-3), "wanted the strain near the samples' floor {floor:.2e}, got {strain:.2e}");
+    let limit = at_most.min(2.0 * floor);
+    assert!(strain <= limit, "wanted the strain within {limit:.2e}, near the samples' floor {floor:.2e}, got {strain:.2e}");
     let bend = max_bend_inside(&s).to_degrees();
     assert!(bend < 120.0, "wanted no fold back inside a piece, got {bend:.1}°");
     s
@@ -315,7 +316,7 @@ fn assert_star_pillow(a: &Contour, n: usize) -> Simulation {
 /// so no mesh on these samples meets 1e-3, and it stays `converged: false`).
 #[test]
 fn test_issue_14_rounded_star_with_a_circle_no_longer_folds_through_itself() {
-    assert_star_pillow(&shapes::rounded_star(), 256);
+    assert_star_pillow(&shapes::rounded_star(), 256, 2e-3);
 }
 
 /// The same star 5e-13 larger (a change in the last bits of its coordinates, as between the
@@ -325,11 +326,11 @@ fn test_issue_14_rounded_star_with_a_circle_no_longer_folds_through_itself() {
 /// solve on the coarsest samples before the fallback is taken.
 #[test]
 fn test_issue_14_rounded_star_a_last_bit_larger_still_starts_from_its_twins() {
-    assert_star_pillow(&shapes::polar(100, |t| 50.0 * (1.0 + 5e-13) * (1.0 + 0.28 * (5.0 * t).cos().powi(3))), 256);
+    assert_star_pillow(&shapes::polar(100, |t| 50.0 * (1.0 + 5e-13) * (1.0 + 0.28 * (5.0 * t).cos().powi(3))), 256, 2e-3);
 }
 
 /// At 128 seam vertices no twin of the rounded star with a circle was solved (the convex path's
-/// flips cycle on the twins' near-straight sides and end 2e-4 to 9e-3 from isometric), so its
+/// flips do not settle on them, which end 2e-4 to 9e-3 from isometric), so its
 /// sheet started from the fallback and ended 28 % strained, folded back (174°), at 1.57e5 mm³
 /// against 2.13e5 at 256. A twin within `TWIN_NEAR` of isometric now starts it: the same
 /// pillow at both resolutions, its volumes a few percent apart (the seam samples' floor at 128,
@@ -337,7 +338,7 @@ fn test_issue_14_rounded_star_a_last_bit_larger_still_starts_from_its_twins() {
 #[test]
 fn test_issue_14_rounded_star_at_128_seam_vertices_is_the_pillow_of_256() {
     let star = shapes::rounded_star();
-    let (coarse, fine) = (assert_star_pillow(&star, 128), assert_star_pillow(&star, 256));
+    let (coarse, fine) = (assert_star_pillow(&star, 128, f64::INFINITY), assert_star_pillow(&star, 256, 2e-3));
     let (v128, v256) = (volume(&coarse), volume(&fine));
     assert!((v128 / v256 - 1.0).abs() <= 0.05, "wanted the volume at 128 within 5 % of 256's {v256:.6e}, got {v128:.6e}");
 }
