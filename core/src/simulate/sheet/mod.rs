@@ -243,11 +243,16 @@ pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, sched
 /// samples or, when those cannot be solved within [`TWIN_BUDGET`], on every other one, every
 /// fourth, every eighth ([`TWIN_STRIDES`]), and last on the coarsest with a larger budget
 /// ([`TWIN_RESCUE_BUDGET`]) when `rescue` is set. Returns the homotopy, the sample polygons solved and
-/// their polyhedron: the first convex one, else the first isometric one the convex path found,
-/// or within [`TWIN_NEAR`] of isometric (dented: the rounded star's twins with a circle have no
-/// other within reach at any stride, and from a dented twin the star's sheet ends within
-/// 1.5e-3 strain, no crossing, where from the fallback start it ended 11–18 % strained and
-/// through itself).
+/// their polyhedron: the first the convex path found convex, or isometric but dented, or within
+/// [`TWIN_NEAR`] of isometric (the rounded star's twins with a circle have no other within reach
+/// at any stride, and from such a twin the star's sheet ends within 1.5e-3 strain, no crossing,
+/// where from the fallback start it ended 11–18 % strained and through itself).
+///
+/// The search ends at the first of any kind: a start near isometric starts the thick homotopy
+/// as well as an exact one ([`TWIN_NEAR`]). Until stop 27 a dented or near twin only ended it
+/// when no convex one followed, and across the core tests none ever did (every pair that met one
+/// used it), so those tries only cost time: the rounded star's at 256 seam vertices tried 6 more
+/// twins after its first near one, 25–40 ms native of its homotopy's first stage (~100 ms).
 ///
 /// Starting from the convex path's approximation of twins it could not solve, at whatever
 /// strain, did worse than the fallback start (the five-lobed shape with a circle ended with
@@ -256,7 +261,6 @@ pub fn thin(shell: &mut Shell, mut x: Vec<V3>, radius: f64, budget: usize, sched
 /// seam vertices, 2 % apart).
 pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool) -> Option<(homotopy::Homotopy, SeamPieces, Solution)> {
     let strides: Vec<usize> = TWIN_STRIDES.iter().copied().filter(|&s| pieces.n % s == 0 && pieces.n / s >= super::seam::COARSEST).collect();
-    let mut dented = None;
     // The twins tried so far (each an embedding of both meshes), for the last try below.
     let mut built = Vec::new();
     for &share in &TWIN_CIRCLE_SHARES {
@@ -264,16 +268,14 @@ pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool) -> Option
         let twin = h.twin_pieces(pieces);
         for &stride in &strides {
             let coarse = twin.every(stride);
-            match super::convex::solve_samples_isometric(&coarse, TWIN_BUDGET, TWIN_NEAR) {
-                Some((sol, true)) => return Some((h, coarse, sol)),
-                Some((sol, false)) if dented.is_none() => dented = Some((h.clone(), coarse, sol)),
-                _ => {}
+            if let Some((sol, _)) = super::convex::solve_samples_isometric(&coarse, TWIN_BUDGET, TWIN_NEAR) {
+                return Some((h, coarse, sol));
             }
         }
         built.push((h, twin));
     }
-    if dented.is_some() || !rescue {
-        return dented;
+    if !rescue {
+        return None;
     }
     // None within the budget: the coarsest samples, patiently, before the fallback start.
     let &stride = strides.last()?;
