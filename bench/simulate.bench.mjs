@@ -131,14 +131,58 @@ function samplingFloor(r) {
   return worst;
 }
 
-for (const [name, a] of [['Pebble + circle (the browser app sample)', pebble], ['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart + circle', heart], ['heart drawn with corners + circle', drawnHeart], ['rounded star + circle', star]]) {
+const nonConvex = [['Pebble + circle (the browser app sample)', pebble], ['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart + circle', heart], ['heart drawn with corners + circle', drawnHeart], ['rounded star + circle', star]];
+for (const [name, a] of nonConvex) {
   const pieces = [a, circleFor(a)];
-  const t0 = performance.now();
+  // The first solve of a pair, then three more: the panel's worker re-solves the same pieces as
+  // the slider moves, so the median of those is the figure the target is about; the first one
+  // also pays for V8 tiering up the sheet path's code, and is printed beside it.
+  let t0 = performance.now();
   const r = m.simulate(pieces, { offset: 0, resolution: 256 });
-  const ms = performance.now() - t0;
+  const first = performance.now() - t0;
+  const again = [];
+  for (let k = 0; k < 3; k++) {
+    t0 = performance.now();
+    m.simulate(pieces, { offset: 0, resolution: 256 });
+    again.push(performance.now() - t0);
+  }
+  again.sort((x, y) => x - y);
+  const ms = again[1];
   const s = r.stats;
   console.log(`== ${name} (WASM, non-convex, 256 seam vertices) ==`);
-  console.log(`  time ${ms.toFixed(1)} ms (≤ 1000 ms) ${mark(ms <= 1000)}   converged ${s.converged} ${mark(s.converged)}   max strain ${s.maxStrain.toExponential(2)} sharpest bend inside a piece ${maxBend(r.vertices, r.triangles, r.piece).toFixed(0)}° (≤ 90, from the mesh) iterations ${s.iterations}${s.converged ? '' : `   shortfall ${s.shortfall}`}`);
+  console.log(`  time ${ms.toFixed(1)} ms median of 3 (${again[0].toFixed(0)}–${again[2].toFixed(0)}; first solve ${first.toFixed(0)} ms) (≤ 1000 ms) ${mark(ms <= 1000)}   converged ${s.converged} ${mark(s.converged)}   max strain ${s.maxStrain.toExponential(2)} sharpest bend inside a piece ${maxBend(r.vertices, r.triangles, r.piece).toFixed(0)}° (≤ 90, from the mesh) iterations ${s.iterations}${s.converged ? '' : `   shortfall ${s.shortfall}`}`);
   const floor = samplingFloor(r);
   console.log(`  sampling floor: no mesh on these seam samples gets below max edge strain ${floor.toExponential(2)} (≤ 1e-3 needed) ${mark(floor <= 1e-3)}${floor > 1e-3 ? ' — the samples, not the solver, rule out a converged answer' : ''}`);
+}
+
+// Sensitivity (issue 14, requirement 3 presumes it is small): the same pair moved on the
+// artboard, and one knot of the first piece moved by 0.01 mm (four knots in turn). A moved
+// pair is the same drawing, so its form should not change at all; a 0.01 mm nudge changes the
+// volume by ~1e-4 of itself, so a spread above that is the solver's, not the drawing's. Today
+// the sheet path is deterministic for a given mesh, but the flat pieces' Delaunay refinement
+// (a circle's samples are all but cocircular) and the seam weights' bins turn on the last bits
+// of the samples, and another mesh ends in another equilibrium. Printed: the volumes' spread
+// (max − min over min), the distinct answers and how many converged.
+const moved = (path, [dx, dy]) => ({ closed: true, points: path.points.map((q) => ({ anchor: [q.anchor[0] + dx, q.anchor[1] + dy], left: [q.left[0] + dx, q.left[1] + dy], right: [q.right[0] + dx, q.right[1] + dy] })) });
+const nudged = (path, k) => {
+  const j = (7 * k) % path.points.length, d = [0.01, -0.005];
+  const move = (p) => [p[0] + d[0], p[1] + d[1]];
+  return { closed: true, points: path.points.map((q, i) => (i === j ? { anchor: move(q.anchor), left: move(q.left), right: move(q.right) } : q)) };
+};
+const spread = (runs) => {
+  const vols = runs.map((s) => s.volume);
+  const [lo, hi] = [Math.min(...vols), Math.max(...vols)];
+  return { dv: (hi - lo) / lo, distinct: new Set(vols.map((v) => v.toPrecision(6))).size, conv: runs.filter((s) => s.converged).length, n: runs.length };
+};
+// An L-shaped hexagon (one reflex corner, shapes.rs' l_shape): every knot a corner.
+const lShape = { closed: true, points: [[0, 0], [80, 0], [80, 40], [40, 40], [40, 80], [0, 80]].map((a) => ({ anchor: a, left: a, right: a })) };
+console.log('== sensitivity (WASM, 256 seam vertices): the pair moved on the artboard, and one knot moved by 0.01 mm ==');
+for (const [name, a] of [['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart drawn with corners + circle', drawnHeart], ['L + circle', lShape]]) {
+  const solve = (p, q) => m.simulate([p, q], { offset: 0, resolution: 256 }).stats;
+  const c = circleFor(a);
+  const base = solve(a, c);
+  const mv = spread([base, ...[[37.3, -11.7], [250.1, 400.9], [-1000.3, 3.3]].map((d) => solve(moved(a, d), moved(c, [d[0] / 2 - 17, d[1]])))]);
+  const ng = spread([base, ...[1, 2, 3, 4].map((k) => { const p = nudged(a, k); return solve(p, circleFor(p)); })]);
+  const line = (w, r, bound) => `${w} ${(100 * r.dv).toFixed(2)} % (${r.distinct} distinct of ${r.n}, converged ${r.conv}) (≤ ${bound} %) ${mark(r.dv <= bound / 100)}`;
+  console.log(`  ${name.padEnd(36)} ${line('moved: volume spread', mv, 0.01)}   ${line('nudged 0.01 mm:', ng, 1)}`);
 }
