@@ -4,7 +4,7 @@
 
 use super::metric::Triangulation;
 use super::seam::SeamPieces;
-use super::vec3::{cross, dot, norm, sub, V3};
+use super::vec3::{centroid, cross, dot, norm, sub, V3};
 
 /// The solver's result: positions, the two triangulations, and how it went.
 #[derive(Debug, Clone)]
@@ -70,4 +70,126 @@ pub fn unshare_planar(pieces: &SeamPieces, x: &[V3], tri: &mut [Triangulation; 2
         }
     }
     flips
+}
+
+/// Largest distance from its plane, over its size, of a shape that [`flatten_near_planar`]
+/// lays flat.
+pub const NEAR_PLANAR: f64 = 1e-4;
+
+/// Largest edge strain a flattened shape may end with (when the shape had less).
+const FLATTENED_STRAIN: f64 = 1e-7;
+
+/// Lays a shape within [`NEAR_PLANAR`] of a plane onto that plane, when that keeps every edge
+/// within [`FLATTENED_STRAIN`] (or the strain it had) of its flat length. Returns whether it did.
+///
+/// Why: the flat doubly covered D-form (congruent pieces glued congruently: at offset 0, or an
+/// ellipse with itself at half its perimeter) is where a flat sheet is infinitesimally flexible,
+/// so a solve that starts a hair off flat ends isometric to 1e-10 but wavy by about the square
+/// root of that, with the two sheets crossing each other at that scale. Two 2:1 ellipses at half
+/// their perimeter, their control points snapped to grids of 2⁻²⁶…2⁻⁴⁴ of their size
+/// ([`super::frame`]), ended so for four of seven grids (sheets crossing at a volume of 1e-5 of
+/// area × size, or a vertex 2.7e-5 off a face plane); the plane through the centroid, normal to
+/// the sum of A's area normals, is the flat answer those waves are round.
+pub fn flatten_near_planar(pieces: &SeamPieces, sol: &mut Solution) -> bool {
+    let x = &sol.x;
+    if x.is_empty() {
+        return false;
+    }
+    let c = centroid(x);
+    let size = x.iter().map(|p| norm(sub(*p, c))).fold(0.0, f64::max);
+    let mut n = [0.0; 3];
+    for &[a, b, k] in &sol.tri[0].tris {
+        let m = cross(sub(x[b], x[a]), sub(x[k], x[a]));
+        n = [n[0] + m[0], n[1] + m[1], n[2] + m[2]];
+    }
+    let l = norm(n);
+    if !(l > 0.0 && size > 0.0) {
+        return false;
+    }
+    let n = [n[0] / l, n[1] / l, n[2] / l];
+    let off = |p: &V3| dot(sub(*p, c), n);
+    if x.iter().map(|p| off(p).abs()).fold(0.0, f64::max) > NEAR_PLANAR * size {
+        return false;
+    }
+    let flat: Vec<V3> = x.iter().map(|p| {
+        let h = off(p);
+        [p[0] - h * n[0], p[1] - h * n[1], p[2] - h * n[2]]
+    }).collect();
+    let strain = |y: &[V3]| {
+        let mut worst = 0.0f64;
+        for (p, t) in sol.tri.iter().enumerate() {
+            for &[a, b, k] in &t.tris {
+                for (i, j) in [(a, b), (b, k), (k, a)] {
+                    let d = pieces.chord(p, i, j);
+                    if d > 0.0 {
+                        worst = worst.max((norm(sub(y[i], y[j])) / d - 1.0).abs());
+                    }
+                }
+            }
+        }
+        worst
+    };
+    if strain(&flat) > strain(x).max(FLATTENED_STRAIN) {
+        return false;
+    }
+    sol.x = flat;
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contour::{Contour, Knot};
+    use crate::simulate::metric::ear_clip;
+    use crate::simulate::seam::Glue;
+    use kurbo::Point;
+
+    /// A 2:1 ellipse glued to itself at half its perimeter (the flat doubly covered D-form), its
+    /// seam laid in z = 0 and waved out of that plane by `wave` of its size.
+    fn waved(wave: f64) -> (SeamPieces, Solution) {
+        let k = 0.552_284_749_830_793_4;
+        let knots = [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)]
+            .map(|(x, y): (f64, f64)| {
+                let a = Point::new(2.0 * x, y);
+                let t = (-2.0 * y * k, x * k);
+                Knot { anchor: a, left: Point::new(a.x - t.0, a.y - t.1), right: Point::new(a.x + t.0, a.y + t.1) }
+            })
+            .to_vec();
+        let e = Contour::new(knots, 0).unwrap();
+        let glue = Glue::new(&e, &e, crate::arclen::ArcTable::new(&e, 1e-13).total() / 2.0).unwrap();
+        let pieces = glue.sample(32);
+        let x: Vec<V3> = pieces.flat[0].pts.iter().map(|p| [p[0], p[1], wave * 4.0 * (3.0 * p[1].atan2(p[0])).sin()]).collect();
+        let tri = [ear_clip(&pieces.flat[0].pts).unwrap(), ear_clip(&pieces.flat[1].pts).unwrap()];
+        (pieces, Solution { x, tri, iterations: 0, flips: 0, converged: true })
+    }
+
+    /// Waves of 1e-6 of the size on the flat answer are laid flat: every vertex in one plane,
+    /// and no edge further from its flat length than before (or than 1e-7).
+    #[test]
+    fn a_flat_answer_waved_by_round_off_is_laid_flat() {
+        let (pieces, mut sol) = waved(1e-6);
+        assert!(flatten_near_planar(&pieces, &mut sol), "wanted the waved sheet laid flat");
+        // The plane through three seam vertices a quarter of the seam apart.
+        let x = &sol.x;
+        let n = cross(sub(x[8], x[0]), sub(x[16], x[0]));
+        let n = [n[0] / norm(n), n[1] / norm(n), n[2] / norm(n)];
+        let off = x.iter().map(|p| dot(sub(*p, x[0]), n).abs()).fold(0.0, f64::max);
+        assert!(off <= 1e-12, "wanted every vertex in one plane, got one {off:e} off it");
+        for (p, t) in sol.tri.iter().enumerate() {
+            for (i, j) in t.edges() {
+                let d = pieces.chord(p, i, j);
+                let strain = (norm(sub(sol.x[i], sol.x[j])) / d - 1.0).abs();
+                assert!(strain <= 1e-7, "edge {i}–{j} of piece {p}: wanted strain ≤ 1e-7, got {strain:e}");
+            }
+        }
+    }
+
+    /// A shape that is really curved (waves of 1e-2 of the size) is left as it is.
+    #[test]
+    fn a_curved_shape_is_not_laid_flat() {
+        let (pieces, mut sol) = waved(1e-2);
+        let before = sol.x.clone();
+        assert!(!flatten_near_planar(&pieces, &mut sol));
+        assert_eq!(sol.x, before);
+    }
 }

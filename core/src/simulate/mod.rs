@@ -73,18 +73,22 @@
 //!   towards convexity, the multistart ladder, hull restarts, polygon pairs on their cone points);
 //!   [`sheet`]: the elastic-sheet path of non-convex pairs (meshes with interior vertices, the
 //!   shell energy, the homotopy from convex twins);
+//! - [`frame`]: each piece moved to its first anchor and snapped, so that where a pair is
+//!   drawn does not change its form;
 //! - [`density`]: seam samples spaced by the curvature mismatch of the two pieces;
 //! - [`checks`]: dihedral signs, convexity as a whole, flat folds; [`stats`]: strain, seam gap,
 //!   area, angle defects, volume; [`clock`]: a timer that works natively and in wasm32.
 //!
 //! Imports run one way: `vec3`, `metric` ← `seam`, `mesh`, `checks`, `isometry` ← `convex` ←
 //! `solve` ← this module; `stats` reads `mesh` and `checks`; `sheet` reads `convex` (the twins'
-//! polyhedron), `checks`, `stats` and `normal`, and only this module reads `sheet`.
+//! polyhedron), `checks`, `stats` and `normal`, and only this module reads `sheet`; `frame`
+//! reads only `contour`.
 
 pub mod checks;
 pub mod clock;
 pub mod convex;
 pub mod density;
+pub mod frame;
 pub mod isometry;
 pub mod mesh;
 pub mod metric;
@@ -132,7 +136,10 @@ pub fn simulate(a: &Contour, b: &Contour, options: &SimulateOptions) -> Result<S
 /// ([`progress`]): the same result, for a host that shows progress.
 pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn FnMut(progress::Progress)) -> Result<Simulation> {
     let timer = clock::Timer::start();
-    let glue = seam::Glue::new(a, b, options.offset)?;
+    // Each piece in its own frame, so that where the pair sits on the artboard cannot change
+    // its form ([`frame`]); `flat` goes back to the input's coordinates at the end.
+    let ((a, fa), (b, fb)) = (frame::local(a, 0), frame::local(b, 1));
+    let glue = seam::Glue::new(&a, &b, options.offset)?;
     let convex = glue.sample(seam::COARSEST).flat.iter().all(|f| checks::is_convex_polygon(&f.pts));
     // A pair with a non-convex piece: the convex path gives the sheet path its start (or, when
     // it meets every promise, e.g. the flat doubly covered sheet, the answer) on a short budget.
@@ -150,6 +157,10 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         }
     }
     stats::judge(&mut sim, !convex);
+    for (corners, &p) in sim.flat.iter_mut().zip(&sim.piece) {
+        let f = if p == 0 { fa } else { fb };
+        *corners = corners.map(|q| f.to_input(q));
+    }
     sim.stats.ms = timer.elapsed_ms();
     Ok(sim)
 }

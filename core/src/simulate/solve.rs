@@ -3,7 +3,7 @@
 
 use super::checks::{is_convex_polygon, max_bend, self_intersecting, shared_chord, FOLD_BEND};
 use super::convex;
-use super::mesh::{unshare_planar, Solution};
+use super::mesh::{flatten_near_planar, unshare_planar, Solution};
 use super::metric::Triangulation;
 use super::options::SimulateOptions;
 use super::seam::{Glue, SeamPieces};
@@ -18,6 +18,7 @@ use crate::error::Result;
 /// 90° inside a piece and no two triangles cross.
 pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solution)> {
     let (pieces, mut sol) = convex::solve(glue, options)?;
+    flatten_near_planar(&pieces, &mut sol);
     sol.flips += unshare_planar(&pieces, &sol.x, &mut sol.tri);
     let convex = pieces.flat.iter().all(|f| is_convex_polygon(&f.pts));
     sol.converged = sol.converged && sound(&sol.x, &sol.tri, !convex);
