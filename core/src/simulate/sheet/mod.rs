@@ -49,6 +49,32 @@
 //! keep every edge within 1e-3 and do not cross; they are `converged: false` with the
 //! [`crate::simulate::Shortfall::Fold`] that hosts word as a crease.
 //!
+//! *The mesh decides among nearby answers (stops 27–28).* For a given mesh the path is
+//! deterministic, but the meshes turn on the samples' last bits: Delaunay refinement decides by
+//! exact in-circle tests, a circle's samples are all but cocircular, and the seam weights
+//! ([`crate::simulate::density`]) count each curvature sample in one bin. Until stop 28 the same
+//! pair moved on the artboard got other triangles and another form (moved by (250.1, 400.9) mm
+//! the L with a circle had 73,438 mm³ against 77,548, 256 seam vertices, native); now each
+//! piece is taken in a frame of its own ([`crate::simulate::frame`]), and a moved pair is the
+//! same to the last bit. A real edit still draws another mesh: with one knot moved by 0.01 mm (a
+//! change of ~1e-4 of the volume) in four ways, the kidney with a circle spreads by 0.01 %, the
+//! Pebble by 0.2 %, the five lobes by 2 %, and the unconverged pairs with a reflex corner by
+//! more (the heart drawn with corners 5 %, the L 14 %). The meshes
+//! have many equilibria there, not one each: the five lobes' answer on one mesh, carried onto
+//! a nudged copy's mesh ([`refine::carry`]) and relaxed at the same bending weight, settles
+//! (in 25–75 steps, to a relative drop of 1e-9) at a volume between its own and that mesh's
+//! answer, at 4–17 % more energy than the answer that mesh's own path found. Likely the
+//! triangles' membrane locking: linear triangles held to 1e-3 strain bend isometrically only
+//! about their own edges, and a bend of curvature κ across a triangle of side h strains it by
+//! about (κh)²/8, 0.01 for the five lobes' lobes (κ ≈ 1/50 mm) at the interior edge of 15 mm.
+//! At 3.5 seam steps instead of 5 ([`INTERIOR_EDGE`]) the five lobes reach 1e-3 a decade
+//! thicker (kb/R² = 1e-6, strain 2.4e-4, where at 5 steps they need 1e-7) and four nudged copies
+//! spread by 0.8 % instead of 1.4 %; at 4 steps one of four took the thicker stage and they
+//! spread by 3.3 %; the kidney spreads by 1 % at 3 steps and falls from converged at 3.5 and 4
+//! (native, stop 28). So the way on is a membrane that does not lock at this mesh size (edges
+//! along the rulings, or strain measured on a coarser set than the bending), not a finer mesh:
+//! at 3 steps the five lobes' mesh has 2,261 vertices against 1,267.
+//!
 //! - [`flatmesh`]: each piece meshed by constrained Delaunay refinement, seam samples kept;
 //! - [`glued`]: the two meshes glued on the seam, and the shell's terms on them;
 //! - [`hinge`]: the dihedral angle of two triangles and its gradient;
