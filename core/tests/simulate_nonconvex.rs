@@ -440,3 +440,32 @@ fn test_issue_14_an_l_at_512_seam_vertices_keeps_its_flat_lengths() {
     let (v512, v256) = (volume(&fine), volume(&coarse));
     assert!((v512 - v256).abs() <= 0.05 * v256, "wanted the volume at 256 seam vertices within 5 %, got {v512:.0} against {v256:.0}");
 }
+
+/// Regression (stop 28): the same pair moved on the artboard got another form. The sheet
+/// path's Delaunay meshes turn on the samples' last bits, so moved by (250.1, 400.9) mm the L
+/// with a circle had 73,438 mm³ against 77,548 and the heart drawn with corners 118,459 against
+/// 116,432. Each piece is now solved relative to its first anchor: the moved pair (each piece
+/// moved its own way) gives the same mesh, the same 3D vertices, and `flat` moved with it.
+#[test]
+fn test_issue_14_a_pair_moved_on_the_artboard_keeps_its_form() {
+    use kurbo::Affine;
+    for (name, a) in [("L hexagon", shapes::l_shape()), ("drawn heart", shapes::drawn_heart())] {
+        let b = shapes::circle_for(&a);
+        let (da, db) = ((250.1, 400.9), (-1000.3, 3.3));
+        let here = run(&a, &b, 0.0, 256, 5000);
+        let there = run(&a.transformed(Affine::translate(da)), &b.transformed(Affine::translate(db)), 0.0, 256, 5000);
+        assert_eq!(here.triangles, there.triangles, "{name}: wanted the same mesh");
+        let size = here.vertices.iter().map(|p| norm(*p)).fold(0.0, f64::max);
+        let moved = here.vertices.iter().zip(&there.vertices).map(|(p, q)| norm(sub(*p, *q))).fold(0.0, f64::max);
+        assert!(moved <= 1e-9 * size, "{name}: wanted the same 3D vertices, one moved by {moved:e} (size {size:.1})");
+        let (v0, v1) = (volume(&here), volume(&there));
+        assert!((v1 / v0 - 1.0).abs() <= 1e-9, "{name}: wanted the volume {v0:.6e}, got {v1:.6e}");
+        for (t, (f, g)) in here.flat.iter().zip(&there.flat).enumerate() {
+            let d = if here.piece[t] == 0 { da } else { db };
+            for (p, q) in f.iter().zip(g) {
+                let off = (q[0] - p[0] - d.0).abs().max((q[1] - p[1] - d.1).abs());
+                assert!(off <= 1e-9 * size, "{name}: triangle {t}'s flat corner moved by ({}, {}), wanted {d:?}", q[0] - p[0], q[1] - p[1]);
+            }
+        }
+    }
+}
