@@ -146,8 +146,23 @@ pub const HOMOTOPY_RTOL: f64 = 1e-3;
 /// Shares of a circle's turning in the convex twins, tried in order ([`morph::Morph`]).
 pub const TWIN_CIRCLE_SHARES: [f64; 3] = [0.25, 0.5, 0.75];
 
-/// Step budget of the convex path when it only gives the sheet path its fallback start.
-pub const START_BUDGET: usize = 1500;
+/// Step budgets of the convex path on a pair with a non-convex piece: its first pass, which
+/// keeps its answer only when that meets every promise (the flat doubly covered form of
+/// congruent pieces), and the patient solve that gives the sheet its start when no twin can be
+/// solved ([`Outcome::NeedsStart`], [`from_start`]) or the sheet ends far from converged
+/// ([`PATIENT_ABOVE`]; then the less strained of the two is the answer, as before). The first pass ran 1,500
+/// steps until stop 28; a pair whose twins start a converged sheet only needs 300 and ends the
+/// same to the last bit: 24–34 ms native of 280–680 saved (Pebble, kidney, five lobes with a
+/// circle, 256 seam vertices), three to four times that in WASM.
+pub const START_BUDGET: usize = 300;
+pub const FALLBACK_BUDGET: usize = 1500;
+
+/// Strain (over [`STRAIN_TARGET`]) up to which an unconverged sheet is the answer without the
+/// patient convex solve ([`FALLBACK_BUDGET`]): on a pair with a non-convex piece the convex path
+/// ends strained by 1–46 % (issue 14's table; the smooth-cusp heart's 1,500 steps: 11 %), so it
+/// is never the less strained answer there. Without this, the patient solve cost the rounded
+/// star (1.4e-3) ~0.4 s in WASM, and the drawn heart and the L (2e-4) for nothing.
+pub const PATIENT_ABOVE: f64 = 10.0;
 
 /// Step budget of one convex solve of the twins ([`twin_start`]), and the strides of the seam
 /// samples it is tried on. At 256 seam vertices the twins that solve take 100–280 steps; the
@@ -388,26 +403,35 @@ pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, budget: usize, report: &mut
     Some((shell, relaxed))
 }
 
-/// The sheet path for a pair with a non-convex piece, given the convex path's answer `seam` on
-/// the same samples (the fallback start, and the answer kept when the sheet does worse). `None`
-/// when a piece cannot be meshed; then the caller keeps `seam`.
-pub fn simulate(pieces: &SeamPieces, seam: &Solution, seam_strain: f64, budget: usize, report: &mut Reporter) -> Option<Simulation> {
+/// What the sheet path made of a pair ([`simulate`]).
+pub enum Outcome {
+    /// The sheet's answer and its largest edge strain.
+    Sheet(Simulation, f64),
+    /// A piece could not be meshed.
+    Unmeshed,
+    /// No twin pair could be built and solved: the sheet starts from the convex path's patient
+    /// answer ([`FALLBACK_BUDGET`], [`from_start`]).
+    NeedsStart,
+}
+
+/// The sheet path for a pair with a non-convex piece, from its convex twins ([`follow`]);
+/// `iterations` are the steps taken before.
+pub fn simulate(pieces: &SeamPieces, iterations: usize, budget: usize, report: &mut Reporter) -> Outcome {
+    let Some(mesh) = SheetMesh::new(pieces, INTERIOR_EDGE) else { return Outcome::Unmeshed };
+    let Some((shell, r)) = follow(pieces, &mesh, budget, report) else { return Outcome::NeedsStart };
+    Outcome::Sheet(finish::simulation(pieces, &mesh, &shell, &r.x, iterations + r.steps, r.converged), r.max_strain)
+}
+
+/// The sheet path from the convex path's answer `seam` on the same samples, lifted onto the
+/// mesh ([`start::lift`]) and thinned through the whole [`SCHEDULE`]: for a pair whose twins
+/// cannot be solved. Returns the answer and its largest edge strain; `None` when a piece cannot
+/// be meshed.
+pub fn from_start(pieces: &SeamPieces, seam: &Solution, budget: usize, report: &mut Reporter) -> Option<(Simulation, f64)> {
     let mesh = SheetMesh::new(pieces, INTERIOR_EDGE)?;
     let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
-    let (shell, relaxed) = match follow(pieces, &mesh, budget, report) {
-        Some(r) => r,
-        None => {
-            let mut shell = mesh.shell();
-            let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
-            report.skip(HOMOTOPY_STEPS);
-            let r = thin(&mut shell, start::lift(pieces, seam, &mesh), radius, budget, &SCHEDULE, &faces, report);
-            (shell, r)
-        }
-    };
-    // An unconverged sheet more strained than the seam-vertex answer (a start folded through
-    // itself) is not a better approximation of the form.
-    if !relaxed.converged && relaxed.max_strain > seam_strain {
-        return None;
-    }
-    Some(finish::simulation(pieces, &mesh, &shell, &relaxed.x, seam.iterations + relaxed.steps, relaxed.converged))
+    let mut shell = mesh.shell();
+    let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
+    report.skip(HOMOTOPY_STEPS);
+    let r = thin(&mut shell, start::lift(pieces, seam, &mesh), radius, budget, &SCHEDULE, &faces, report);
+    Some((finish::simulation(pieces, &mesh, &shell, &r.x, seam.iterations + r.steps, r.converged), r.max_strain))
 }
