@@ -2,6 +2,7 @@
 //! signed volume and its orientation. A's triangles face outward as they are (counter-clockwise
 //! in the flat piece), B's reversed.
 
+use super::isometry::{bars, max_strain};
 use super::metric::Triangulation;
 use super::seam::SeamPieces;
 use super::vec3::{centroid, cross, dot, norm, sub, V3};
@@ -115,21 +116,8 @@ pub fn flatten_near_planar(pieces: &SeamPieces, sol: &mut Solution) -> bool {
         let h = off(p);
         [p[0] - h * n[0], p[1] - h * n[1], p[2] - h * n[2]]
     }).collect();
-    let strain = |y: &[V3]| {
-        let mut worst = 0.0f64;
-        for (p, t) in sol.tri.iter().enumerate() {
-            for &[a, b, k] in &t.tris {
-                for (i, j) in [(a, b), (b, k), (k, a)] {
-                    let d = pieces.chord(p, i, j);
-                    if d > 0.0 {
-                        worst = worst.max((norm(sub(y[i], y[j])) / d - 1.0).abs());
-                    }
-                }
-            }
-        }
-        worst
-    };
-    if strain(&flat) > strain(x).max(FLATTENED_STRAIN) {
+    let bars = bars(pieces, &sol.tri);
+    if max_strain(&flat, &bars) > max_strain(x, &bars).max(FLATTENED_STRAIN) {
         return false;
     }
     sol.x = flat;

@@ -153,17 +153,16 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     if !convex && !solution.converged && left > 0 {
         let mut report = progress::Reporter::new(observe, sheet::STAGES);
         report.stage(sim.stats.max_strain);
-        let outcome = sheet::simulate(&pieces, solution.iterations, left, &mut report);
         // A sheet that converged, or ended within `PATIENT_ABOVE` of the strain target, is the
         // answer: the convex path on a pair with a non-convex piece ends strained by percents.
-        let mut settled = false;
-        if let sheet::Outcome::Sheet(s, strain) = &outcome {
-            if s.stats.converged || *strain <= sheet::PATIENT_ABOVE * sheet::STRAIN_TARGET {
-                sim = s.clone();
-                settled = true;
+        let unsettled = match sheet::simulate(&pieces, solution.iterations, left, &mut report) {
+            sheet::Outcome::Sheet(s, strain) if s.stats.converged || strain <= sheet::PATIENT_ABOVE * sheet::STRAIN_TARGET => {
+                sim = s;
+                None
             }
-        }
-        if !settled {
+            other => Some(other),
+        };
+        if let Some(outcome) = unsettled {
             // No such sheet: the convex path's patient answer is the answer when it meets
             // every promise, else the sheet's start when no twin could be solved, and the answer
             // when the sheet ends more strained (a start folded through itself is not a better
