@@ -28,20 +28,8 @@ use starts::{initial_guess, resample, upsample, LIFTS};
 /// (see [`solve_cold`]). Never panics; an input that cannot even be triangulated is an error.
 pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solution)> {
     let Some(w) = &options.warm else { return solve_cold(glue, options) };
-    // A warm start: a previous result's vertices, already outward (never mirrored).
-    let pieces = glue.sample(options.resolution);
-    let mut x = resample(w, pieces.n);
-    // The triangulations read off the convex hull of the warm positions ([`hull::triangulations`]):
-    // a previous convex result is the hull of its vertices, so its own chords come back and only
-    // the few that the new offset turns reflex are flipped. Else plain ear clipping, not
-    // [`triangulate`]: the warm positions decide the flips.
-    let mut tri = match hull::triangulations(&x, &pieces) {
-        Some(t) => t,
-        None => [ear_clip(&pieces, 0)?, ear_clip(&pieces, 1)?],
-    };
-    let budget = options.max_iterations.min(WARM_BUDGET).max(1);
-    let r = relax_damped(&pieces, &mut x, &mut tri, budget, STEP_TOL, Orientation::Kept, WARM);
-    if is_good(&x, &tri, r.converged) && exact_if_polyhedral(&pieces, &x, &tri) && convex_as_a_whole(&x, &tri) {
+    let (pieces, x, tri, r) = warm_ladder(glue, options, w)?;
+    if r.converged {
         let solution = Solution { x, tri, iterations: r.iterations, flips: r.flips, converged: true };
         return Ok((pieces, solution));
     }
@@ -52,8 +40,7 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
     // The cold solve gets what is left of the user's `max_iterations`.
     let left = options.max_iterations.saturating_sub(r.iterations);
     if left == 0 {
-        let converged = r.converged && exact_if_polyhedral(&pieces, &x, &tri) && convex_as_a_whole(&x, &tri);
-        return Ok((pieces, Solution { x, tri, iterations: r.iterations, flips: r.flips, converged }));
+        return Ok((pieces, Solution { x, tri, iterations: r.iterations, flips: r.flips, converged: false }));
     }
     let cold = SimulateOptions { warm: None, max_iterations: left, ..options.clone() };
     let (p, mut sol) = solve_cold(glue, &cold)?;
@@ -61,6 +48,73 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
     sol.flips += r.flips;
     Ok((p, sol))
 }
+
+/// A warm start on the coarse-to-fine ladder: the previous result's vertices resampled to the
+/// coarsest of [`WARM_RUNGS`] levels, relaxed there from the triangulations of their convex
+/// hull with the [`WARM`] damping, then each finer level from the last ([`relax_level`]).
+/// Returns the finest level's samples, shape and triangulations, and a relaxation whose
+/// `converged` says the answer is good (convex, undented, isometric): otherwise the caller drops
+/// it for a cold solve.
+fn warm_ladder(glue: &Glue, options: &SimulateOptions, w: &[V3]) -> Result<(SeamPieces, Vec<V3>, [Triangulation; 2], relax::Relaxed)> {
+    let n = options.resolution;
+    let mut levels = vec![n];
+    while levels.len() < WARM_RUNGS && levels[levels.len() - 1] % 2 == 0 && glue.nests(levels[levels.len() - 1] / 2) {
+        levels.push(levels[levels.len() - 1] / 2);
+    }
+    levels.reverse();
+    let mut samples: Vec<SeamPieces> = glue.sample_levels(&levels);
+    let mut steps = (0usize, 0usize);
+    let first = &samples[0];
+    let mut x = resample(w, first.n);
+    // The triangulations read off the convex hull of the warm positions ([`hull::triangulations`]):
+    // a previous convex result is the hull of its vertices, so its own chords come back and only
+    // the few that the new offset turns reflex are flipped. Else plain ear clipping, not
+    // [`triangulate`]: the warm positions decide the flips.
+    let mut tri = match hull::triangulations(&x, first) {
+        Some(t) => t,
+        None => [ear_clip(first, 0)?, ear_clip(first, 1)?],
+    };
+    let budget = options.max_iterations.min(WARM_BUDGET).max(1);
+    let single = levels.len() == 1;
+    let tol = if single { STEP_TOL } else { 1e-6 };
+    let r = relax_damped(first, &mut x, &mut tri, budget, tol, Orientation::Kept, WARM).tally(&mut steps);
+    let loose = !single && max_strain(&x, &bars(first, &tri)) <= LEVEL_STRAIN_TOL;
+    let mut good = is_good(&x, &tri, r.converged || loose);
+    let mut converged = r.converged;
+    for li in 1..levels.len() {
+        let budget = options.max_iterations.saturating_sub(steps.0).min(WARM_BUDGET);
+        if !good || budget == 0 {
+            // Given up: the shape laid onto the finest level as it is, so that what is returned
+            // has the resolution's seam vertices.
+            (good, converged) = (false, false);
+            let (pc, pf) = (&samples[li - 1], &samples[li]);
+            (x, tri) = (upsample(pc, &x, &tri, pf), [refine(&tri, pf, 0)?, refine(&tri, pf, 1)?]);
+            continue;
+        }
+        let last = li + 1 == levels.len();
+        let tol = if last { STEP_TOL } else { 1e-6 };
+        let (xf, tf, r) = relax_level(&samples[li - 1], &x, &tri, &samples[li], budget, tol, last, &mut steps)?;
+        (x, tri, converged) = (xf, tf, r.converged);
+        let loose = !last && max_strain(&x, &bars(&samples[li], &tri)) <= LEVEL_STRAIN_TOL;
+        good = is_good(&x, &tri, converged || loose);
+    }
+    let pieces = samples.pop().expect("a level");
+    let done = good && converged && exact_if_polyhedral(&pieces, &x, &tri) && convex_as_a_whole(&x, &tri);
+    Ok((pieces, x, tri, relax::Relaxed { iterations: steps.0, flips: steps.1, converged: done }))
+}
+
+/// Levels of a warm start's ladder ([`warm_ladder`]): 3, so it begins at a quarter of the
+/// resolution (64 seam vertices at 256) where the ladder nests that far.
+///
+/// A slider step of 1 % of the perimeter shifts every one of B's chords by a few samples, so
+/// the warm shape's chords are all wrong for the new offset: relaxed at 256 seam vertices
+/// directly (as until stop 29) the bench's crossed 2:1 ellipses took 21–33 steps and 640–850
+/// flips at 256, 1.13–1.18 times a cold solve once the cold solve's finer levels took the warm
+/// damping ([`relax_level`]). Begun at 64 they take 10–14 steps there, 9–10 at 128 and 12–15 at
+/// 256, the last level costing what the cold solve's does; the warm start saves the cold
+/// solve's multistart and coarse levels. Begun at 128 it was as fast (0.79–0.94 of the cold
+/// solve against 0.79–0.95), at 32 no faster.
+pub(crate) const WARM_RUNGS: usize = 3;
 
 /// Step budgets of one pass of the cold solve: per multistart attempt on the coarsest level, per
 /// refinement level while other starts remain, and in all (`cap`, counted with the steps of
@@ -298,8 +352,6 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
             let mut abandoned = false;
             for li in first + 1..levels.len() {
                 let (pc, pf) = (&samples[li - 1], &samples[li]);
-                let mut tf = [refine(&tri, pf, 0)?, refine(&tri, pf, 1)?];
-                let mut xf = upsample(pc, &x, &tri, pf);
                 let remaining = patience.cap.saturating_sub(steps.0);
                 let retry = (from < LIFTS.len() || !final_rung) && remaining > 0;
                 let full = if retry { remaining.min(patience.level) } else { remaining };
@@ -309,7 +361,7 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
                 let budget = if polyhedral { full.min(patience.level) } else { full };
                 let last = li + 1 == levels.len();
                 let tol = if last { STEP_TOL } else { 1e-6 };
-                let r = relax(pf, &mut xf, &mut tf, budget, tol, Orientation::Kept).tally(steps);
+                let (xf, tf, r) = relax_level(pc, &x, &tri, pf, budget, tol, last, steps)?;
                 (x, tri, converged) = (xf, tf, r.converged);
                 let mut loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
                 if polyhedral && !is_good(&x, &tri, converged || loose) {
@@ -346,6 +398,54 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
         }
     }
     Ok(best.map(|(x, tri, converged, _)| (x, tri, converged, false)))
+}
+
+/// Steps a finer level of the ladder gets with the [`WARM`] damping before it falls back to the
+/// cold one ([`relax_level`]): a level that starts from the coarser solution takes 7–21 steps
+/// with it (the bench's crossed 2:1 ellipses and an ellipse with a circle, 64 to 256 seam
+/// vertices), so one that needs more is not heading for the convex realization.
+pub(crate) const LEVEL_WARM_BUDGET: usize = 50;
+
+/// Relaxes a finer level `pf` of the ladder from the coarser solution `(xc, tc)` of `pc` laid
+/// onto it ([`upsample`], [`refine`]): first with the [`WARM`] damping, within
+/// [`LEVEL_WARM_BUDGET`] steps, and when that does not end good ([`is_good`]; on a level before
+/// the last, within [`LEVEL_STRAIN_TOL`]) again from the same start with the cold damping and
+/// the rest of `budget`. Returns the shape, its triangulations and the relaxation kept, whose
+/// steps and flips are all the level took.
+///
+/// The upsampled start is isometric up to the coarse level's O(h²) error, the zero-residual
+/// case in which undamped Gauss–Newton converges quadratically (see [`WARM`]). With the cold
+/// schedule every flip pass restarted at λ = 1e-4 and shrank by 3 a step: the crossed ellipses
+/// took 31 steps at 256 seam vertices where the warm damping takes 12 (131 → 98 steps in all,
+/// native 9.7 → 7.6 ms; an ellipse with a circle 115 → 84, 8.3 → 6.5 ms), to the same
+/// polyhedron (volume within 1e-8). The fallback is for the singular point of the length
+/// equations, the flat doubly covered D-form (two 2:1 ellipses at half their perimeter), where
+/// λ = 1e-10 amplifies round-off out of the plane and the level ends 8 % strained; the cold
+/// damping keeps it flat. Alexandrov's uniqueness makes the good answers of both schedules the
+/// same polyhedron, so trying the fast one first cannot pick another branch.
+#[allow(clippy::too_many_arguments)]
+fn relax_level(
+    pc: &SeamPieces,
+    xc: &[V3],
+    tc: &[Triangulation; 2],
+    pf: &SeamPieces,
+    budget: usize,
+    tol: f64,
+    last: bool,
+    steps: &mut (usize, usize),
+) -> Result<(Vec<V3>, [Triangulation; 2], relax::Relaxed)> {
+    let start = || -> Result<_> { Ok((upsample(pc, xc, tc, pf), [refine(tc, pf, 0)?, refine(tc, pf, 1)?])) };
+    let (mut x, mut tri) = start()?;
+    let warm = relax_damped(pf, &mut x, &mut tri, budget.min(LEVEL_WARM_BUDGET), tol, Orientation::Kept, WARM).tally(steps);
+    let loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
+    if is_good(&x, &tri, warm.converged || loose) || budget <= warm.iterations {
+        return Ok((x, tri, warm));
+    }
+    let (mut x, mut tri) = start()?;
+    let mut cold = relax(pf, &mut x, &mut tri, budget - warm.iterations, tol, Orientation::Kept).tally(steps);
+    cold.iterations += warm.iterations;
+    cold.flips += warm.flips;
+    Ok((x, tri, cold))
 }
 
 /// The convex polyhedron of two convex sample polygons given as they are (no outlines behind
