@@ -40,7 +40,10 @@
 //! isometric branch the solver lands on depends on the start, so a cold solve is a multistart
 //! over starts (saddles, a fourfold start, the chord-mismatch start) on a coarse-to-fine ladder,
 //! first with tight step budgets, then (only if that found no convex branch) with patient ones:
-//! nearly flat regions (pieces with straight stretches) settle slowly but correctly.
+//! nearly flat regions (pieces with straight stretches) settle slowly but correctly. Each finer
+//! level starts from the coarser answer, isometric up to O(h²), and is relaxed undamped first
+//! (with the cold damping only if that fails: the flat doubly covered sheet is a singular point);
+//! a warm start climbs the same ladder from a quarter of the resolution.
 //!
 //! *Why not the alternatives.* Bobenko–Izmestiev (geometry-central's `embedConvex`) is exact and
 //! fast but needs strictly positive curvature and fails on the flat doubly covered case (two
