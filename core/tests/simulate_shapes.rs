@@ -337,6 +337,19 @@ fn warm_slider_step_does_not_reflip_every_chord() {
     }
 }
 
+/// Regression (stop 29): a finer level of the ladder that the undamped try cannot settle is
+/// relaxed again with the cold damping; given only the steps the try left, the 64-vertex level
+/// of two 2:1 ellipses (eight cubic arcs each, 60 × 30) at a quarter offset ran out at its
+/// first start and the solve took 862 steps to the same polyhedron instead of 139. The work,
+/// not the time, is asserted.
+#[test]
+fn test_issue_14_a_level_that_falls_back_keeps_its_budget() {
+    let e = circle_arcs(8).transformed(Affine::scale_non_uniform(60.0, 30.0));
+    let p = perimeter(&e);
+    let s = run(&e, &e, p / 4.0, 64);
+    assert!(s.stats.converged && s.stats.iterations <= 300, "64 seam vertices: wanted converged within 300 steps, got {:?}", s.stats);
+}
+
 #[test]
 fn non_convex_piece_gives_a_finite_shape_and_honest_stats() {
     // A kidney-like piece (one concave stretch) glued to a circle of the same perimeter.

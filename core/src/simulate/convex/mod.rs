@@ -93,7 +93,7 @@ fn warm_ladder(glue: &Glue, options: &SimulateOptions, w: &[V3]) -> Result<(Seam
         }
         let last = li + 1 == levels.len();
         let tol = if last { STEP_TOL } else { 1e-6 };
-        let (xf, tf, r) = relax_level(&samples[li - 1], &x, &tri, &samples[li], budget, tol, last, &mut steps)?;
+        let (xf, tf, r) = relax_level(&samples[li - 1], &x, &tri, &samples[li], budget, options.max_iterations, tol, last, &mut steps)?;
         (x, tri, converged) = (xf, tf, r.converged);
         let loose = !last && max_strain(&x, &bars(&samples[li], &tri)) <= LEVEL_STRAIN_TOL;
         good = is_good(&x, &tri, converged || loose);
@@ -361,7 +361,7 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
                 let budget = if polyhedral { full.min(patience.level) } else { full };
                 let last = li + 1 == levels.len();
                 let tol = if last { STEP_TOL } else { 1e-6 };
-                let (xf, tf, r) = relax_level(pc, &x, &tri, pf, budget, tol, last, steps)?;
+                let (xf, tf, r) = relax_level(pc, &x, &tri, pf, budget, patience.cap, tol, last, steps)?;
                 (x, tri, converged) = (xf, tf, r.converged);
                 let mut loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
                 if polyhedral && !is_good(&x, &tri, converged || loose) {
@@ -410,7 +410,9 @@ pub(crate) const LEVEL_WARM_BUDGET: usize = 50;
 /// onto it ([`upsample`], [`refine`]): first with the [`WARM`] damping, within
 /// [`LEVEL_WARM_BUDGET`] steps, and when that does not end good ([`is_good`]; on a level before
 /// the last, within [`LEVEL_STRAIN_TOL`]) again from the same start with the cold damping and
-/// the rest of `budget`. Returns the shape, its triangulations and the relaxation kept, whose
+/// the whole `budget` (within `cap` steps in all), as the level had before it tried the warm
+/// damping: with only what the warm try left, two 2:1 ellipses at a quarter offset and 64 seam
+/// vertices ran out at their first start and took 862 steps instead of 139. Returns the shape, its triangulations and the relaxation kept, whose
 /// steps and flips are all the level took.
 ///
 /// The upsampled start is isometric up to the coarse level's O(h²) error, the zero-residual
@@ -430,6 +432,7 @@ fn relax_level(
     tc: &[Triangulation; 2],
     pf: &SeamPieces,
     budget: usize,
+    cap: usize,
     tol: f64,
     last: bool,
     steps: &mut (usize, usize),
@@ -438,11 +441,12 @@ fn relax_level(
     let (mut x, mut tri) = start()?;
     let warm = relax_damped(pf, &mut x, &mut tri, budget.min(LEVEL_WARM_BUDGET), tol, Orientation::Kept, WARM).tally(steps);
     let loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
-    if is_good(&x, &tri, warm.converged || loose) || budget <= warm.iterations {
+    let left = budget.min(cap.saturating_sub(steps.0));
+    if is_good(&x, &tri, warm.converged || loose) || left == 0 {
         return Ok((x, tri, warm));
     }
     let (mut x, mut tri) = start()?;
-    let mut cold = relax(pf, &mut x, &mut tri, budget - warm.iterations, tol, Orientation::Kept).tally(steps);
+    let mut cold = relax(pf, &mut x, &mut tri, left, tol, Orientation::Kept).tally(steps);
     cold.iterations += warm.iterations;
     cold.flips += warm.flips;
     Ok((x, tri, cold))
