@@ -412,8 +412,8 @@ pub(crate) const LEVEL_WARM_BUDGET: usize = 50;
 /// the last, within [`LEVEL_STRAIN_TOL`]) again from the same start with the cold damping and
 /// the whole `budget` (within `cap` steps in all), as the level had before it tried the warm
 /// damping: with only what the warm try left, two 2:1 ellipses at a quarter offset and 64 seam
-/// vertices ran out at their first start and took 862 steps instead of 139. Returns the shape, its triangulations and the relaxation kept, whose
-/// steps and flips are all the level took.
+/// vertices ran out at their first start and took 862 steps instead of 139. Returns the shape,
+/// its triangulations and the relaxation kept, whose steps and flips are all the level took.
 ///
 /// The upsampled start is isometric up to the coarse level's O(h²) error, the zero-residual
 /// case in which undamped Gauss–Newton converges quadratically (see [`WARM`]). With the cold
