@@ -140,14 +140,13 @@ pub(crate) const QUICK: Patience = Patience { attempt: 60, level: 150, cap: 1000
 /// 256 seam vertices) — longer than the quick budgets allow, but the branch is right.
 pub(crate) const PATIENT: Patience = Patience { attempt: 2000, level: 2000, cap: usize::MAX, hull: true };
 
-/// Steps allowed to a warm start before it is dropped for a cold solve. From the hull of the
-/// previous result ([`hull::triangulations`]) with the warm damping ([`relax::WARM`]) a slider
-/// step of 1 % of the perimeter takes 5–33 steps at 256 seam vertices (the bench's crossed 2:1
-/// ellipses 21–33, an ellipse with a circle 5–9); a warm start that needs more is heading for a
-/// shape the solver cannot realize, and grinding it longer only delays the cold solve the slider
-/// then waits for. 50 steps at the finest level cost about half the crossed ellipses' cold
-/// solve (130 steps, most of them on the coarser levels), so a warm start that fails costs the
-/// slider that much on top of the cold solve, and one that succeeds saves the rest. (It was 300 when a step took 25–105 steps from an ear clipping.)
+/// Steps allowed to each level of a warm start ([`warm_ladder`]) before it is dropped for a
+/// cold solve. Climbing from 64 seam vertices, a slider step of 1 % of the perimeter takes
+/// 10–14, 9–10 and 12–15 steps on the levels of 64, 128 and 256 (the bench's crossed 2:1
+/// ellipses); a level that needs more is heading for a shape the solver cannot realize, and
+/// grinding it longer only delays the cold solve the slider then waits for. (It was 300 when a
+/// warm start was relaxed at the finest level from an ear clipping, in 25–105 steps; 50 there
+/// from the previous result's hull, in 5–33, until stop 29.)
 pub(crate) const WARM_BUDGET: usize = 50;
 
 /// Strain below which a coarser level (relaxed only to a step of 1e-6 of the size) counts as
