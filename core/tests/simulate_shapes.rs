@@ -337,6 +337,35 @@ fn warm_slider_step_does_not_reflip_every_chord() {
     }
 }
 
+/// A warm start is only a hint (stop 29 made it climb the ladder from a quarter of the
+/// resolution): from vertices that are no previous answer of this pair (three points, all at
+/// one point, another pair's answer, a previous answer at another resolution, points on a line)
+/// the solve still ends converged on the cold answer's volume, or honest, and never panics.
+#[test]
+fn warm_start_from_odd_vertices_lands_on_the_cold_answer() {
+    let e = ellipse(2.0, 1.0);
+    let p = perimeter(&e);
+    let c = circle_like(&e);
+    let cold = run(&e, &e, p / 4.0, 256);
+    let other = run(&e, &c, 0.0, 256);
+    let coarse = run(&e, &e, p / 4.0, 64);
+    let line: Vec<[f64; 3]> = (0..256).map(|k| [k as f64, 0.0, 0.0]).collect();
+    let odd: [(&str, Vec<[f64; 3]>); 5] = [
+        ("three points", vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]),
+        ("one point", vec![[1.0, 2.0, 3.0]; 256]),
+        ("another pair's answer", other.vertices.clone()),
+        ("this pair at 64 seam vertices", coarse.vertices.clone()),
+        ("points on a line", line),
+    ];
+    for (name, warm) in odd {
+        let o = SimulateOptions { offset: p / 4.0, resolution: 256, warm: Some(warm), ..Default::default() };
+        let s = simulate(&e, &e, &o).unwrap_or_else(|err| panic!("{name}: wanted an answer, got {err}"));
+        let rel = (s.stats.volume - cold.stats.volume).abs() / cold.stats.volume;
+        assert!(s.stats.converged && rel < 1e-6, "{name}: wanted converged at volume {}, got {} ({rel:.1e}), {:?}", cold.stats.volume, s.stats.volume, s.stats);
+        assert_eq!(s.seam.len(), 256, "{name}: the answer has the resolution's seam vertices");
+    }
+}
+
 /// Regression (stop 29): a finer level of the ladder that the undamped try cannot settle is
 /// relaxed again with the cold damping; given only the steps the try left, the 64-vertex level
 /// of two 2:1 ellipses (eight cubic arcs each, 60 × 30) at a quarter offset ran out at its
