@@ -87,15 +87,12 @@ fn warm_ladder(glue: &Glue, options: &SimulateOptions, w: &[V3]) -> Result<(Seam
             // Given up: the shape laid onto the finest level as it is, so that what is returned
             // has the resolution's seam vertices.
             (good, converged) = (false, false);
-            let (pc, pf) = (&samples[li - 1], &samples[li]);
-            (x, tri) = (upsample(pc, &x, &tri, pf), [refine(&tri, pf, 0)?, refine(&tri, pf, 1)?]);
+            (x, tri) = laid_onto(&samples[li - 1], &x, &tri, &samples[li])?;
             continue;
         }
         let last = li + 1 == levels.len();
-        let tol = if last { STEP_TOL } else { 1e-6 };
-        let (xf, tf, r) = relax_level(&samples[li - 1], &x, &tri, &samples[li], budget, options.max_iterations, tol, last, &mut steps)?;
+        let (xf, tf, r, loose) = relax_level(&samples[li - 1], &x, &tri, &samples[li], budget, options.max_iterations, last, &mut steps)?;
         (x, tri, converged) = (xf, tf, r.converged);
-        let loose = !last && max_strain(&x, &bars(&samples[li], &tri)) <= LEVEL_STRAIN_TOL;
         good = is_good(&x, &tri, converged || loose);
     }
     let pieces = samples.pop().expect("a level");
@@ -360,9 +357,9 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
                 let budget = if polyhedral { full.min(patience.level) } else { full };
                 let last = li + 1 == levels.len();
                 let tol = if last { STEP_TOL } else { 1e-6 };
-                let (xf, tf, r) = relax_level(pc, &x, &tri, pf, budget, patience.cap, tol, last, steps)?;
+                let (xf, tf, r, level_loose) = relax_level(pc, &x, &tri, pf, budget, patience.cap, last, steps)?;
                 (x, tri, converged) = (xf, tf, r.converged);
-                let mut loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
+                let mut loose = level_loose;
                 if polyhedral && !is_good(&x, &tri, converged || loose) {
                     // Within the cap, like every other step (`max_iterations` is the user's).
                     let left = CONE_BUDGET.min(patience.level).min(patience.cap.saturating_sub(steps.0));
@@ -411,8 +408,10 @@ pub(crate) const LEVEL_WARM_BUDGET: usize = 50;
 /// the last, within [`LEVEL_STRAIN_TOL`]) again from the same start with the cold damping and
 /// the whole `budget` (within `cap` steps in all), as the level had before it tried the warm
 /// damping: with only what the warm try left, two 2:1 ellipses at a quarter offset and 64 seam
-/// vertices ran out at their first start and took 862 steps instead of 139. Returns the shape,
-/// its triangulations and the relaxation kept, whose steps and flips are all the level took.
+/// vertices ran out at their first start and took 862 steps instead of 139. Relaxed to a step
+/// of 1e-6 of the size, or of [`STEP_TOL`] on the `last` level. Returns the shape, its
+/// triangulations, the relaxation kept (whose steps and flips are all the level took) and,
+/// on a level before the last, whether its strain is within [`LEVEL_STRAIN_TOL`].
 ///
 /// The upsampled start is isometric up to the coarse level's O(h²) error, the zero-residual
 /// case in which undamped Gauss–Newton converges quadratically (see [`WARM`]). With the cold
@@ -432,23 +431,30 @@ fn relax_level(
     pf: &SeamPieces,
     budget: usize,
     cap: usize,
-    tol: f64,
     last: bool,
     steps: &mut (usize, usize),
-) -> Result<(Vec<V3>, [Triangulation; 2], relax::Relaxed)> {
-    let start = || -> Result<_> { Ok((upsample(pc, xc, tc, pf), [refine(tc, pf, 0)?, refine(tc, pf, 1)?])) };
-    let (mut x, mut tri) = start()?;
+) -> Result<(Vec<V3>, [Triangulation; 2], relax::Relaxed, bool)> {
+    let tol = if last { STEP_TOL } else { 1e-6 };
+    let loose = |x: &[V3], tri: &[Triangulation; 2]| !last && max_strain(x, &bars(pf, tri)) <= LEVEL_STRAIN_TOL;
+    let (mut x, mut tri) = laid_onto(pc, xc, tc, pf)?;
     let warm = relax_damped(pf, &mut x, &mut tri, budget.min(LEVEL_WARM_BUDGET), tol, Orientation::Kept, WARM).tally(steps);
-    let loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
+    let warm_loose = loose(&x, &tri);
     let left = budget.min(cap.saturating_sub(steps.0));
-    if is_good(&x, &tri, warm.converged || loose) || left == 0 {
-        return Ok((x, tri, warm));
+    if is_good(&x, &tri, warm.converged || warm_loose) || left == 0 {
+        return Ok((x, tri, warm, warm_loose));
     }
-    let (mut x, mut tri) = start()?;
+    let (mut x, mut tri) = laid_onto(pc, xc, tc, pf)?;
     let mut cold = relax(pf, &mut x, &mut tri, left, tol, Orientation::Kept).tally(steps);
     cold.iterations += warm.iterations;
     cold.flips += warm.flips;
-    Ok((x, tri, cold))
+    let cold_loose = loose(&x, &tri);
+    Ok((x, tri, cold, cold_loose))
+}
+
+/// The coarser solution `(xc, tc)` of `pc` laid onto the finer level `pf`: its shape by
+/// [`upsample`], its triangulations by [`refine`].
+fn laid_onto(pc: &SeamPieces, xc: &[V3], tc: &[Triangulation; 2], pf: &SeamPieces) -> Result<(Vec<V3>, [Triangulation; 2])> {
+    Ok((upsample(pc, xc, tc, pf), [refine(tc, pf, 0)?, refine(tc, pf, 1)?]))
 }
 
 /// The convex polyhedron of two convex sample polygons given as they are (no outlines behind
