@@ -19,7 +19,9 @@
 //!
 //! Each Gauss–Newton step solves `(JᵀJ + λ·μ I) Δ = −Jᵀr` with the block LDLᵀ of
 //! [`crate::simulate::normal`]; its pattern holds the mesh edges and the two tips of every
-//! hinge (the only pair of a hinge's four vertices that is not an edge).
+//! hinge (the only pair of a hinge's four vertices that is not an edge). A thin sheet can
+//! leave the tips out ([`Shell::set_tip_blocks`]): the matrix is then a sparser majorant of
+//! `JᵀJ`, with the same gradient, hence the same equilibria.
 
 use super::hinge::angle_and_gradient;
 use crate::simulate::normal::NormalEquations;
@@ -52,14 +54,40 @@ pub struct Shell {
     pub edges: Vec<Edge>,
     pub hinges: Vec<Hinge>,
     ne: NormalEquations,
-    /// The pattern's pairs, and for each term the pair slots of its vertex pairs.
+    /// The pattern's pairs, and for each term the pair slots of its vertex pairs
+    /// ([`TIPS_LEFT_OUT`] for a hinge's tips when the pattern has none).
     pairs: Vec<(usize, usize)>,
     edge_slot: Vec<usize>,
     hinge_slots: Vec<[usize; 6]>,
+    tips: bool,
 }
 
-/// The pairs of a hinge's four vertices, in the order of [`Shell::hinge_slots`].
+/// The pairs of a hinge's four vertices, in the order of [`Shell::hinge_slots`]; the last one
+/// is its two tips, the pair that is no mesh edge.
 const HINGE_PAIRS: [(usize, usize); 6] = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+
+/// The slot of a hinge's tip pair in a pattern without tip blocks.
+const TIPS_LEFT_OUT: usize = usize::MAX;
+
+/// The thinning's bending weights (`kb/R²`, see [`super::SCHEDULE`]) at and below which its
+/// normal equations leave the hinges' tip blocks out ([`Shell::set_tip_blocks`]).
+///
+/// Without them the pattern is the mesh's edges, a planar graph: at 256 seam vertices the
+/// factor of the drawn heart with a circle holds 20,431 blocks instead of 48,502 and takes
+/// 311,564 block updates instead of 1,556,849 (the rounded star's: 256,957 against
+/// 1,210,255). The majorant is a cruder model of the energy, so a stage takes more steps and
+/// factorizations (1.1–2 times), but each fresh one costs about a fifth: the thinning's
+/// stages at and below 1e-7 are where a thin sheet spends most of its steps.
+///
+/// The thicker stages keep the tips, because there the path still chooses its equilibrium,
+/// and the cruder model chose others. Dropped from the homotopy's thick sheet
+/// ([`super::HOMOTOPY_KB`]) on, the rounded star's first homotopy step went from 13 % to 166 %
+/// strain. Dropped from 1e-5, the bench's kidney with a circle (WASM) ended folded by 98.5°
+/// instead of converged at 73°. From 1e-6, the kidney with a 2:1 ellipse at 128 seam
+/// vertices ended strained by 1.4e-3 instead of converged, and the blob with a circle was
+/// 1.08 % apart at 128 and 256. From 1e-7, every pair of the tests and the bench ends in the
+/// same equilibrium (volumes within 0.13 %, the same sharpest bends).
+pub const TIPLESS_KB: f64 = 1e-7;
 
 /// Accepted steps on one factorization.
 pub const REUSE: usize = 4;
@@ -76,19 +104,27 @@ pub const HALVINGS: usize = 3;
 
 impl Shell {
     pub fn new(n: usize, edges: Vec<Edge>, hinges: Vec<Hinge>) -> Self {
-        let mut slot = KeyMap::default();
-        let mut pairs = Vec::new();
-        let mut key = |a: usize, b: usize, pairs: &mut Vec<(usize, usize)>| {
-            let k = (a.min(b), a.max(b));
-            *slot.entry(pair_key(k.0, k.1)).or_insert_with(|| {
-                pairs.push(k);
-                pairs.len() - 1
-            })
-        };
-        let edge_slot = edges.iter().map(|e| key(e.i, e.j, &mut pairs)).collect();
-        let hinge_slots = hinges.iter().map(|h| HINGE_PAIRS.map(|(a, b)| key(h.v[a], h.v[b], &mut pairs))).collect();
+        let (pairs, edge_slot, hinge_slots) = pattern(&edges, &hinges, true);
         let ne = NormalEquations::new(n, &pairs);
-        Shell { n, edges, hinges, ne, pairs, edge_slot, hinge_slots }
+        Shell { n, edges, hinges, ne, pairs, edge_slot, hinge_slots, tips: true }
+    }
+
+    /// Whether the normal equations hold each hinge's tip block (they do from
+    /// [`Shell::new`]). Left out, each hinge's tip pair `(k, l)` with gradient rows `g_k`,
+    /// `g_l` gets the matrix `JᵀJ + Σ [g_k; −g_l][g_k; −g_l]ᵀ` instead of `JᵀJ`: the added term
+    /// cancels the block `g_k g_lᵀ` and adds `g_k g_kᵀ`, `g_l g_lᵀ` to the two diagonal blocks
+    /// (diagonal compensation of a dropped entry, as in Gustafsson's modified incomplete
+    /// factorization, BIT 18, 1978), so the matrix stays positive semidefinite and above
+    /// `JᵀJ`: each step is still a descent direction of the same energy, only shorter along
+    /// the bending's modes, and the equilibria are the same. A change rebuilds the pattern
+    /// and its ordering. See [`TIPLESS_KB`].
+    pub fn set_tip_blocks(&mut self, tips: bool) {
+        if tips == self.tips {
+            return;
+        }
+        let (pairs, edge_slot, hinge_slots) = pattern(&self.edges, &self.hinges, tips);
+        self.ne = NormalEquations::new(self.n, &pairs);
+        (self.pairs, self.edge_slot, self.hinge_slots, self.tips) = (pairs, edge_slot, hinge_slots, tips);
     }
 
     /// Sets every edge's rest length to the blend `(1 − t)·L⁰ + t·L¹` of its lengths in the flat
@@ -167,6 +203,17 @@ impl Shell {
                 }
             }
             for (&s, &(p, q)) in slots.iter().zip(pair_of) {
+                if s == TIPS_LEFT_OUT {
+                    // Diagonal compensation of the left-out block (see `set_tip_blocks`).
+                    for w in [p, q] {
+                        for a in 0..3 {
+                            for c in 0..3 {
+                                diag[vs[w]][a][c] += rows[w][a] * rows[w][c];
+                            }
+                        }
+                    }
+                    continue;
+                }
                 // The stored pair is (min, max), its block has the rows of its first vertex.
                 let (ra, rb) = if pairs[s].0 == vs[p] { (rows[p], rows[q]) } else { (rows[q], rows[p]) };
                 for a in 0..3 {
@@ -281,6 +328,32 @@ impl Shell {
     }
 }
 
+/// The vertex pairs of the normal equations' pattern, the slot of each edge's pair, and the
+/// slots of each hinge's six pairs.
+type Pattern = (Vec<(usize, usize)>, Vec<usize>, Vec<[usize; 6]>);
+
+/// The [`Pattern`] of the terms: every edge's pair, then every hinge's, its tips'
+/// [`TIPS_LEFT_OUT`] unless `tips`.
+fn pattern(edges: &[Edge], hinges: &[Hinge], tips: bool) -> Pattern {
+    let mut slot = KeyMap::default();
+    let mut pairs = Vec::new();
+    let mut key = |a: usize, b: usize, pairs: &mut Vec<(usize, usize)>| {
+        let k = (a.min(b), a.max(b));
+        *slot.entry(pair_key(k.0, k.1)).or_insert_with(|| {
+            pairs.push(k);
+            pairs.len() - 1
+        })
+    };
+    let edge_slot = edges.iter().map(|e| key(e.i, e.j, &mut pairs)).collect();
+    let hinge_slots = hinges
+        .iter()
+        .map(|h| {
+            HINGE_PAIRS.map(|(a, b)| if tips || (a, b) != (2, 3) { key(h.v[a], h.v[b], &mut pairs) } else { TIPS_LEFT_OUT })
+        })
+        .collect();
+    (pairs, edge_slot, hinge_slots)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -289,6 +362,127 @@ mod tests {
     fn seam_triangle() -> Shell {
         let e = |i, j, rest, piece| Edge { i, j, rest, piece };
         Shell::new(3, vec![e(0, 1, 10.0, 0), e(1, 2, 10.0, 0), e(2, 0, 10.0, 0), e(1, 0, 10.5, 1)], Vec::new())
+    }
+
+    /// A 3×3 grid of vertices (spacing 10) cut into 8 triangles, with its 8 interior edges as
+    /// hinges, bent out of its plane by `z`; the rest lengths are the flat grid's.
+    fn grid_sheet(z: impl Fn(usize) -> f64) -> (Shell, Vec<V3>) {
+        let at = |v: usize| [10.0 * (v % 3) as f64, 10.0 * (v / 3) as f64];
+        let mut faces = Vec::new();
+        for r in 0..2 {
+            for c in 0..2 {
+                let v = 3 * r + c;
+                faces.push([v, v + 1, v + 4]);
+                faces.push([v, v + 4, v + 3]);
+            }
+        }
+        let mut edges: Vec<Edge> = Vec::new();
+        let mut hinges = Vec::new();
+        let mut seen: std::collections::HashMap<(usize, usize), usize> = Default::default();
+        for (f, t) in faces.iter().enumerate() {
+            for q in 0..3 {
+                let (i, j) = (t[q], t[(q + 1) % 3]);
+                let key = (i.min(j), i.max(j));
+                match seen.get(&key) {
+                    Some(&g) => {
+                        let tip = |t: &[usize; 3]| *t.iter().find(|&&v| v != i && v != j).unwrap();
+                        hinges.push(Hinge { v: [i, j, tip(&faces[g]), tip(t)], weight: 3.0 });
+                    }
+                    None => {
+                        seen.insert(key, f);
+                        let (a, b) = (at(i), at(j));
+                        edges.push(Edge { i, j, rest: (a[0] - b[0]).hypot(a[1] - b[1]), piece: 0 });
+                    }
+                }
+            }
+        }
+        let x = (0..9).map(|v| [at(v)[0], at(v)[1], z(v)]).collect();
+        (Shell::new(9, edges, hinges), x)
+    }
+
+    /// The dense `3n × 3n` matrix of the blocks [`Shell::assemble`] fills, and the gradient.
+    fn dense(shell: &Shell, x: &[V3], kb: f64) -> (Vec<Vec<f64>>, Vec<f64>) {
+        let mut diag = vec![[[0.0; 3]; 3]; shell.n];
+        let mut off = vec![[[0.0; 3]; 3]; shell.pairs.len()];
+        let g = shell.assemble(x, kb, Some((&mut diag, &mut off)));
+        let mut m = vec![vec![0.0; 3 * shell.n]; 3 * shell.n];
+        for (v, b) in diag.iter().enumerate() {
+            for a in 0..3 {
+                for c in 0..3 {
+                    m[3 * v + a][3 * v + c] += b[a][c];
+                }
+            }
+        }
+        for (&(p, q), b) in shell.pairs.iter().zip(&off) {
+            for a in 0..3 {
+                for c in 0..3 {
+                    m[3 * p + a][3 * q + c] += b[a][c];
+                    m[3 * q + c][3 * p + a] += b[a][c];
+                }
+            }
+        }
+        (m, g)
+    }
+
+    /// Leaving the tips out adds `c cᵀ` per hinge, `c = w·(g_k on tip k, −g_l on tip l)` from
+    /// the hinge's own gradient (so the matrix stays above `JᵀJ`), keeps the gradient, and
+    /// drops every tip pair that is no edge from the pattern.
+    #[test]
+    fn leaving_the_tips_out_adds_a_square_per_hinge_and_keeps_the_gradient() {
+        let (mut shell, x) = grid_sheet(|v| [0.0, 1.5, -0.7, 2.0, 0.3, -1.1, 0.9, -2.2, 1.4][v]);
+        let kb = 0.8;
+        let (m, g) = dense(&shell, &x, kb);
+        shell.set_tip_blocks(false);
+        let (m2, g2) = dense(&shell, &x, kb);
+        assert_eq!(g, g2, "the gradient must not change");
+        let mut want = m.clone();
+        for h in &shell.hinges {
+            let [i, j, k, l] = h.v;
+            let (_, grad) = angle_and_gradient(x[i], x[j], x[k], x[l]).expect("a proper hinge");
+            let w2 = kb * h.weight;
+            let mut c = vec![0.0; 3 * shell.n];
+            for a in 0..3 {
+                c[3 * k + a] += grad[2][a];
+                c[3 * l + a] -= grad[3][a];
+            }
+            for (r, row) in want.iter_mut().enumerate() {
+                for (col, e) in row.iter_mut().enumerate() {
+                    *e += w2 * c[r] * c[col];
+                }
+            }
+        }
+        let scale = m.iter().flatten().fold(0.0f64, |s, v| s.max(v.abs()));
+        for r in 0..3 * shell.n {
+            for c in 0..3 * shell.n {
+                assert!((m2[r][c] - want[r][c]).abs() <= 1e-12 * scale, "entry ({r}, {c}): wanted {}, got {}", want[r][c], m2[r][c]);
+            }
+        }
+        let edge = |a: usize, b: usize| shell.edges.iter().any(|e| (e.i.min(e.j), e.i.max(e.j)) == (a.min(b), a.max(b)));
+        for &(a, b) in &shell.pairs {
+            assert!(edge(a, b), "pair ({a}, {b}) of the tipless pattern is no edge");
+        }
+        shell.set_tip_blocks(true);
+        let (m3, _) = dense(&shell, &x, kb);
+        assert_eq!(m, m3, "putting the tips back must give the matrix of Shell::new");
+    }
+
+    /// With the sparser majorant the minimization still ends at the equilibrium: a bent grid
+    /// relaxes to its flat rest shape (zero energy) with the tips left out, as with them.
+    #[test]
+    fn a_tipless_minimization_still_relaxes_a_bent_sheet_flat() {
+        for tips in [true, false] {
+            let (mut shell, mut x) = grid_sheet(|v| [0.0, 0.8, -0.4, 1.0, 0.2, -0.6, 0.5, -1.2, 0.7][v]);
+            shell.set_tip_blocks(tips);
+            let kb = 1e-2;
+            let start = shell.cost(&x, kb);
+            let mut lambda = 1e-3;
+            let steps = shell.minimize(&mut x, kb, 500, 1e-14, &mut lambda);
+            let end = shell.cost(&x, kb);
+            let strain = shell.max_strain(&x);
+            println!("tips {tips}: energy {start:.3e} → {end:.3e} in {steps} steps, strain {strain:.1e}");
+            assert!(end <= 1e-12 * start, "tips {tips}: wanted the flat sheet's zero energy, got {end:e} from {start:e}");
+            assert!(strain <= 1e-6, "tips {tips}: wanted the rest lengths, got strain {strain:e}");
+        }
     }
 
     #[test]
