@@ -364,40 +364,20 @@ mod tests {
         Shell::new(3, vec![e(0, 1, 10.0, 0), e(1, 2, 10.0, 0), e(2, 0, 10.0, 0), e(1, 0, 10.5, 1)], Vec::new())
     }
 
-    /// A 3×3 grid of vertices (spacing 10) cut into 8 triangles, with its 8 interior edges as
-    /// hinges, bent out of its plane by `z`; the rest lengths are the flat grid's.
+    /// A 3×3 grid of vertices (spacing 10) cut into 8 triangles as piece A of a
+    /// [`super::super::glued::SheetMesh`] (piece B empty), with the shell's terms it gives: its
+    /// 16 edges and a hinge on each of its 8 interior edges. Bent out of its plane by `z`.
     fn grid_sheet(z: impl Fn(usize) -> f64) -> (Shell, Vec<V3>) {
-        let at = |v: usize| [10.0 * (v % 3) as f64, 10.0 * (v / 3) as f64];
-        let mut faces = Vec::new();
-        for r in 0..2 {
-            for c in 0..2 {
-                let v = 3 * r + c;
-                faces.push([v, v + 1, v + 4]);
-                faces.push([v, v + 4, v + 3]);
-            }
-        }
-        let mut edges: Vec<Edge> = Vec::new();
-        let mut hinges = Vec::new();
-        let mut seen: std::collections::HashMap<(usize, usize), usize> = Default::default();
-        for (f, t) in faces.iter().enumerate() {
-            for q in 0..3 {
-                let (i, j) = (t[q], t[(q + 1) % 3]);
-                let key = (i.min(j), i.max(j));
-                match seen.get(&key) {
-                    Some(&g) => {
-                        let tip = |t: &[usize; 3]| *t.iter().find(|&&v| v != i && v != j).unwrap();
-                        hinges.push(Hinge { v: [i, j, tip(&faces[g]), tip(t)], weight: 3.0 });
-                    }
-                    None => {
-                        seen.insert(key, f);
-                        let (a, b) = (at(i), at(j));
-                        edges.push(Edge { i, j, rest: (a[0] - b[0]).hypot(a[1] - b[1]), piece: 0 });
-                    }
-                }
-            }
-        }
-        let x = (0..9).map(|v| [at(v)[0], at(v)[1], z(v)]).collect();
-        (Shell::new(9, edges, hinges), x)
+        let flat: Vec<[f64; 2]> = (0..9).map(|v| [10.0 * (v % 3) as f64, 10.0 * (v / 3) as f64]).collect();
+        let faces = (0..4).flat_map(|q| {
+            let v = 3 * (q / 2) + q % 2;
+            [[v, v + 1, v + 4], [v, v + 4, v + 3]]
+        });
+        let mesh = super::super::glued::SheetMesh { n: 8, faces: [faces.collect(), Vec::new()], flat: [flat.clone(), flat.clone()] };
+        let shell = mesh.shell();
+        assert_eq!((shell.edges.len(), shell.hinges.len()), (16, 8), "the grid's edges and hinges");
+        let x = flat.iter().enumerate().map(|(v, p)| [p[0], p[1], z(v)]).collect();
+        (shell, x)
     }
 
     /// The dense `3n × 3n` matrix of the blocks [`Shell::assemble`] fills, and the gradient.
