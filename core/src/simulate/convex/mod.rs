@@ -76,9 +76,9 @@ fn warm_ladder(glue: &Glue, options: &SimulateOptions, w: &[V3]) -> Result<(Seam
     };
     let budget = options.max_iterations.min(WARM_BUDGET).max(1);
     let single = levels.len() == 1;
-    let tol = if single { STEP_TOL } else { 1e-6 };
+    let tol = level_tol(single);
     let r = relax_damped(first, &mut x, &mut tri, budget, tol, Orientation::Kept, WARM).tally(&mut steps);
-    let loose = !single && max_strain(&x, &bars(first, &tri)) <= LEVEL_STRAIN_TOL;
+    let loose = level_loose(first, &x, &tri, single);
     let mut good = is_good(&x, &tri, r.converged || loose);
     let mut converged = r.converged;
     for li in 1..levels.len() {
@@ -149,6 +149,18 @@ pub(crate) const WARM_BUDGET: usize = 50;
 /// Strain below which a coarser level (relaxed only to a step of 1e-6 of the size) counts as
 /// solved: its solution is only a start for the next level, which polishes it.
 pub(crate) const LEVEL_STRAIN_TOL: f64 = 1e-5;
+
+/// The step tolerance a level of the ladder is relaxed to: [`STEP_TOL`] on the `last` (finest)
+/// level, 1e-6 of the size on a coarser one, which only starts the next.
+fn level_tol(last: bool) -> f64 {
+    if last { STEP_TOL } else { 1e-6 }
+}
+
+/// Whether a level before the `last` counts as solved by its strain alone
+/// ([`LEVEL_STRAIN_TOL`]), though its loose relaxation did not converge.
+fn level_loose(pf: &SeamPieces, x: &[V3], tri: &[Triangulation; 2], last: bool) -> bool {
+    !last && max_strain(x, &bars(pf, tri)) <= LEVEL_STRAIN_TOL
+}
 
 /// Out-of-plane sine of a reflex chord above which a solution counts as dented (a wrong
 /// isometric branch) rather than convex up to the tiny folds that coarse levels keep.
@@ -330,8 +342,8 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
     // polygon that coarse can make a wrong branch the only one within reach), 64, and so on.
     'ladder: for first in 0..levels.len() {
         let coarse_tri = [triangulate(&samples[first], 0)?, triangulate(&samples[first], 1)?];
-        let coarse_tol = if first + 1 == levels.len() { STEP_TOL } else { 1e-6 };
         let final_rung = first + 1 == levels.len();
+        let coarse_tol = level_tol(final_rung);
         let mut from = 0;
         while from < LIFTS.len() {
             let Some((mut x, mut tri, mut converged, next)) =
@@ -356,10 +368,10 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
                 let polyhedral = hull::cone_vertices(pf).is_some();
                 let budget = if polyhedral { full.min(patience.level) } else { full };
                 let last = li + 1 == levels.len();
-                let tol = if last { STEP_TOL } else { 1e-6 };
-                let (xf, tf, r, level_loose) = relax_level(pc, &x, &tri, pf, budget, patience.cap, last, steps)?;
+                let tol = level_tol(last);
+                let (xf, tf, r, loose_level) = relax_level(pc, &x, &tri, pf, budget, patience.cap, last, steps)?;
                 (x, tri, converged) = (xf, tf, r.converged);
-                let mut loose = level_loose;
+                let mut loose = loose_level;
                 if polyhedral && !is_good(&x, &tri, converged || loose) {
                     // Within the cap, like every other step (`max_iterations` is the user's).
                     let left = CONE_BUDGET.min(patience.level).min(patience.cap.saturating_sub(steps.0));
@@ -369,7 +381,7 @@ pub(crate) fn ladder(samples: &[SeamPieces], levels: &[usize], patience: Patienc
                     } else if full > r.iterations {
                         let r = relax(pf, &mut x, &mut tri, full - r.iterations, tol, Orientation::Kept).tally(steps);
                         converged = r.converged;
-                        loose = !last && max_strain(&x, &bars(pf, &tri)) <= LEVEL_STRAIN_TOL;
+                        loose = level_loose(pf, &x, &tri, last);
                     }
                 }
                 if retry && !is_good(&x, &tri, converged || loose) {
@@ -434,11 +446,10 @@ fn relax_level(
     last: bool,
     steps: &mut (usize, usize),
 ) -> Result<(Vec<V3>, [Triangulation; 2], relax::Relaxed, bool)> {
-    let tol = if last { STEP_TOL } else { 1e-6 };
-    let loose = |x: &[V3], tri: &[Triangulation; 2]| !last && max_strain(x, &bars(pf, tri)) <= LEVEL_STRAIN_TOL;
+    let tol = level_tol(last);
     let (mut x, mut tri) = laid_onto(pc, xc, tc, pf)?;
     let warm = relax_damped(pf, &mut x, &mut tri, budget.min(LEVEL_WARM_BUDGET), tol, Orientation::Kept, WARM).tally(steps);
-    let warm_loose = loose(&x, &tri);
+    let warm_loose = level_loose(pf, &x, &tri, last);
     let left = budget.min(cap.saturating_sub(steps.0));
     if is_good(&x, &tri, warm.converged || warm_loose) || left == 0 {
         return Ok((x, tri, warm, warm_loose));
@@ -447,7 +458,7 @@ fn relax_level(
     let mut cold = relax(pf, &mut x, &mut tri, left, tol, Orientation::Kept).tally(steps);
     cold.iterations += warm.iterations;
     cold.flips += warm.flips;
-    let cold_loose = loose(&x, &tri);
+    let cold_loose = level_loose(pf, &x, &tri, last);
     Ok((x, tri, cold, cold_loose))
 }
 
