@@ -772,3 +772,31 @@ fn test_issue_14_tight_rounded_corners_keep_every_edge_within_1e3() {
         assert_closed(&s);
     }
 }
+
+/// Regression (issue 14): a 60×40 rectangle whose corners are rounded at 0.05 mm, glued to a
+/// circle, ended 19 % strained at 256 seam vertices and 180 % at 128 (through itself). Each
+/// rounding turns by 90° in 0.08 mm, which the graded seam steps (at most 16 times shorter than
+/// the even ones, 0.05 mm here) cannot follow: the seam edges cut across it on the rectangle
+/// only. Such a turn is now a kink, a seam vertex walked as a corner (`simulate::kink`). The form
+/// must be the sharp rectangle's, scaled by the perimeters' ratio cubed (the rounding takes
+/// (8 − 2π)r off the perimeter), within 2e-4, at both resolutions; converged, with every edge
+/// within 1e-3 of its flat length (from `flat`) and closed.
+#[test]
+fn test_issue_14_corners_rounded_below_the_seam_step_are_taken_as_corners() {
+    let sharp = rectangle(60.0, 40.0);
+    let with_circle = |piece: &Contour| circle_arcs(16).transformed(Affine::scale(perimeter(piece) / perimeter(&circle_arcs(16))));
+    for n in [128, 256] {
+        let v0 = run(&sharp, &with_circle(&sharp), 0.0, n).stats.volume;
+        for r in [0.01, 0.03, 0.05] {
+            let piece = rounded_rectangle(60.0, 40.0, r);
+            let s = run(&piece, &with_circle(&piece), 0.0, n);
+            assert!(s.stats.converged, "r = {r} mm, {n} seam vertices: wanted converged, got {:?}", s.stats);
+            let strain = mesh_checks::max_edge_strain(&s);
+            assert!(strain <= 1e-3, "r = {r} mm, {n}: wanted every edge within 1e-3 of its flat length, got {strain:.2e}");
+            assert_closed(&s);
+            let want = v0 * (perimeter(&piece) / perimeter(&sharp)).powi(3);
+            let got = mesh_checks::volume(&s);
+            assert!((got / want - 1.0).abs() <= 2e-4, "r = {r} mm, {n}: wanted the sharp rectangle's volume scaled, {want:.1} mm³, got {got:.1}");
+        }
+    }
+}

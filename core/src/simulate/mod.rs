@@ -3,7 +3,9 @@
 //! Two flat pieces A and B with equal perimeter L are stitched edge to edge: the point at arc
 //! length `s` on A (walked counter-clockwise from its first anchor) meets the point at arc length
 //! `offset + s` on B (walked clockwise from its first anchor) — the `start` convention of
-//! `connect`, so what the user previews is what the connectors assemble.
+//! `connect`, so what the user previews is what the connectors assemble. (Up to
+//! [`kink::KINK_SHIFT`] of `L` per kink, a turn rounded too tightly for the seam, taken as a
+//! corner: see [`seam`].)
 //!
 //! ## Method (why this one)
 //!
@@ -98,6 +100,7 @@ pub mod metric;
 pub mod normal;
 pub mod options;
 pub mod progress;
+pub mod kink;
 pub mod seam;
 pub mod sheet;
 pub mod solve;

@@ -8,13 +8,17 @@
 //! sample moves onto each one. A seam edge straddling a corner would cut it on that piece only,
 //! so its two flat lengths (the chords of A and B) would differ by `O(h·θ²)` for a turn θ instead
 //! of `O(h³κ²)`: a rectangle's corner sampled between vertices gives ~10 % strain that no
-//! realization can remove.
+//! realization can remove. So are kinks, turns too tight for the seam's steps at smooth anchors
+//! or inside a segment ([`super::kink`]): each piece is walked along the seam by arc length with
+//! its kinks taken as corners ([`Walk`]), which moves the gluing by at most
+//! [`super::kink::KINK_SHIFT`] of the perimeter per kink, and by nothing on a piece without.
 
 use crate::arclen::{unit_tangent, ArcTable};
 use crate::contour::Contour;
 use crate::error::{Error, Result};
 use crate::validate;
-use super::density::Density;
+use super::density::{Density, KINK_WINDOW, REFERENCE};
+use super::kink::{kinks, Walk};
 use super::metric::KeyMap;
 
 /// Relative accuracy of the arc lengths used to place seam samples: far below any visible or
@@ -73,11 +77,12 @@ pub struct Glue {
     ta: ArcTable,
     tb: ArcTable,
     area: [f64; 2],
-    offset: f64,
     /// Seam positions (arc length along A's walk, in `[0, L)`) of both pieces' corners, sorted.
     corners: Vec<f64>,
     /// The curvature-graded spacing ([`Density`]), `None` where the even step serves.
     density: Option<Density>,
+    /// Each piece walked along the seam, its kinks taken as corners ([`Walk`]).
+    walk: [Walk; 2],
 }
 
 impl Glue {
@@ -105,19 +110,41 @@ impl Glue {
         if (pa - pb).abs() > PERIMETER_TOLERANCE * pa.max(pb) {
             return Err(Error::PerimeterMismatch { a: pa, b: pb });
         }
-        // B's arc lengths run over its own perimeter, which may differ from A's by the tolerance.
-        let k = pa / pb;
-        let mut corners: Vec<f64> =
-            corners(&ta).into_iter().chain(corners(&tb).into_iter().map(|s| k * (s - offset))).map(|s| ta.wrap(s)).collect();
+        // B's arc lengths run over its own perimeter, which may differ from A's by the tolerance
+        // (each walk is scaled to A's).
+        let anchors = [anchor_corners(&ta), anchor_corners(&tb)];
+        let kinks = [kinks(&ta, &anchors[0]), kinks(&tb, &anchors[1])];
+        // The seam starts at A's first anchor, or at a kink whose window (its tight stretch and
+        // what the density leaves out beside it) holds that anchor: a sample there would cut
+        // the kink's turn, and the samples nested between it and the kink would all lie in it
+        // (a rectangle whose corners are rounded at 0.05 mm and whose first anchor starts a
+        // corner had seam edges of 0.009 mm across that corner, 18 % apart on A and B).
+        let starts = [0.0, offset];
+        let window = KINK_WINDOW * pa / REFERENCE;
+        let origin = (0..2)
+            .flat_map(|p| kinks[p].iter().map(move |k| (p, k)))
+            .find_map(|(p, k)| {
+                // In seam positions (B's arc lengths run over its own perimeter), any turn round.
+                let scale = if p == 0 { 1.0 } else { pa / pb };
+                let (from, to, at) = ((k.from - starts[p]) * scale - window, (k.to - starts[p]) * scale + window, (k.at - starts[p]) * scale);
+                [-pa, 0.0, pa].into_iter().find(|&w| from + w <= 0.0 && to + w >= 0.0).map(|w| at + w)
+            })
+            .unwrap_or(0.0);
+        let starts = [origin, offset + origin * (pb / pa)];
+        let walk = [Walk::new(&ta, starts[0], pa, &kinks[0]), Walk::new(&tb, starts[1], pa, &kinks[1])];
+        let mut corners: Vec<f64> = Vec::new();
+        for (p, t) in [&ta, &tb].into_iter().enumerate() {
+            corners.extend(anchors[p].iter().map(|&x| walk[p].seam_of(t, x)).chain(walk[p].kink_positions()).map(|s| ta.wrap(s)));
+        }
         crate::order::sort_f64(&mut corners);
-        let density = Density::new(&ta, &tb, offset);
-        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], offset, corners, density })
+        let density = Density::new(&ta, &tb, starts, [&kinks[0], &kinks[1]]);
+        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], corners, density, walk })
     }
 
     /// Seam positions of `n` samples: equal steps `h = L/n` from 0, with the nearest free sample
     /// moved onto each corner (see the module docs), or failing that a free neighbour. A sample
     /// moves by at most one step and the positions stay strictly increasing; sample 0 stays at
-    /// A's first anchor. A corner with no free sample near it (several corners within one step)
+    /// the seam's start (A's first anchor, or a kink beside it: see [`Glue::new`]). A corner with no free sample near it (several corners within one step)
     /// keeps the step.
     ///
     /// Nested: for even `n` with `n/2` a level of the ladder ([`Glue::nests`]), the samples are those
@@ -244,12 +271,10 @@ impl Glue {
     fn sample_cached(&self, n: usize, cache: &mut [(KeyMap, Vec<[f64; 2]>); 2]) -> SeamPieces {
         let u = self.positions(n);
         let total = self.ta.total();
-        let sample = |t: &ArcTable, start: f64, mirror: f64, (index, points): &mut (KeyMap, Vec<[f64; 2]>)| -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
-            // B's own perimeter may differ from A's by up to the stitching tolerance.
-            let k = t.total() / total;
+        let sample = |t: &ArcTable, walk: &Walk, mirror: f64, (index, points): &mut (KeyMap, Vec<[f64; 2]>)| -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
             let mut at = |s: f64| {
                 let m = *index.entry(s.to_bits()).or_insert_with(|| {
-                    let p = t.point_at(start + k * s);
+                    let p = t.point_at(walk.arc(s));
                     points.push([mirror * p.x, p.y]);
                     points.len() - 1
                 });
@@ -260,8 +285,8 @@ impl Glue {
             (pts, mid)
         };
         let [ca, cb] = cache;
-        let (pts_a, mid_a) = sample(&self.ta, 0.0, 1.0, ca);
-        let (pts_b, mid_b) = sample(&self.tb, self.offset, -1.0, cb);
+        let (pts_a, mid_a) = sample(&self.ta, &self.walk[0], 1.0, ca);
+        let (pts_b, mid_b) = sample(&self.tb, &self.walk[1], -1.0, cb);
         SeamPieces {
             n,
             flat: [
@@ -283,7 +308,7 @@ impl SeamPieces {
 
 /// Arc lengths (from knot 0) of the anchors where the tangent turns by more than
 /// [`CORNER_TURN`]; zero-length segments are looked through.
-fn corners(t: &ArcTable) -> Vec<f64> {
+fn anchor_corners(t: &ArcTable) -> Vec<f64> {
     let n = t.segment_count();
     let live: Vec<usize> = (0..n).filter(|&i| t.segment_start(i + 1) > t.segment_start(i)).collect();
     let mut out = Vec::new();

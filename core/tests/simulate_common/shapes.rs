@@ -85,7 +85,7 @@ pub fn heart() -> Contour {
         .map(|k| k as f64 * TAU / m as f64)
         .map(|t| (3.0 * 16.0 * t.sin().powi(3), 3.0 * (13.0 * t.cos() - 5.0 * (2.0 * t).cos() - 2.0 * (3.0 * t).cos() - (4.0 * t).cos())))
         .collect();
-    // Counter-clockwise with its first anchor at the top dip.
+    // Counter-clockwise with its first anchor one point after the top dip (0.59 mm along it).
     let mut pts = pts;
     pts.reverse();
     smooth(&pts)
