@@ -135,8 +135,8 @@ pub fn kinks(t: &ArcTable, corners: &[f64]) -> Vec<Kink> {
         .map(|(a, b, turn)| {
             // Bisect for the tangent at half the turn (the sign of its cross product with the
             // start's tangent turned by half the turn changes there; turns below 2π).
-            let start = t.frame_at(t.wrap(a)).1;
-            let half = kurbo::Vec2::new(start.x * (0.5 * turn).cos() - start.y * (0.5 * turn).sin(), start.x * (0.5 * turn).sin() + start.y * (0.5 * turn).cos());
+            let (pa, ta) = t.frame_at(t.wrap(a));
+            let half = kurbo::Vec2::new(ta.x * (0.5 * turn).cos() - ta.y * (0.5 * turn).sin(), ta.x * (0.5 * turn).sin() + ta.y * (0.5 * turn).cos());
             let side = |s: f64| half.cross(t.frame_at(t.wrap(s)).1) * turn.signum();
             let (mut lo, mut hi) = (a, b);
             for _ in 0..60 {
@@ -144,7 +144,6 @@ pub fn kinks(t: &ArcTable, corners: &[f64]) -> Vec<Kink> {
                 if side(mid) < 0.0 { lo = mid } else { hi = mid }
             }
             let at = 0.5 * (lo + hi);
-            let (pa, ta) = t.frame_at(t.wrap(a));
             let (pm, _) = t.frame_at(t.wrap(at));
             let (pb, tb) = t.frame_at(t.wrap(b));
             let before = ((at - a) - (pm - pa).dot(ta)).max(0.0);

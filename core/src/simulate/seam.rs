@@ -144,8 +144,8 @@ impl Glue {
     /// Seam positions of `n` samples: equal steps `h = L/n` from 0, with the nearest free sample
     /// moved onto each corner (see the module docs), or failing that a free neighbour. A sample
     /// moves by at most one step and the positions stay strictly increasing; sample 0 stays at
-    /// the seam's start (A's first anchor, or a kink beside it: see [`Glue::new`]). A corner with no free sample near it (several corners within one step)
-    /// keeps the step.
+    /// the seam's start (A's first anchor, or a kink beside it: see [`Glue::new`]). A corner
+    /// with no free sample near it (several corners within one step) keeps the step.
     ///
     /// Nested: for even `n` with `n/2` a level of the ladder ([`Glue::nests`]), the samples are those
     /// of `n/2` and the midpoints between them, so a corner is sample `2m` when it is sample `m`
