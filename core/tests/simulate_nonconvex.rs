@@ -516,3 +516,41 @@ fn test_issue_14_a_pair_moved_on_the_artboard_keeps_its_form() {
         }
     }
 }
+
+/// A creased answer said that the circle bends by 125° "along a line inside it", but not where:
+/// a student had to find the crease by orbiting the preview. `creases` now lists every interior
+/// edge of a piece bent by more than 90°, checked here against the bends computed from the mesh
+/// (the same edges, piece and angle); a converged non-convex answer and a convex pair, whose
+/// sharp chords are edges of its Alexandrov polyhedron (a flat triangle on a circle), list none.
+#[test]
+fn test_issue_14_a_creased_form_says_where_it_creases() {
+    for (name, a) in [("L hexagon", shapes::l_shape()), ("drawn heart", shapes::drawn_heart())] {
+        let s = run(&a, &shapes::circle_for(&a), 0.0, 256, 5000);
+        let mut wanted: Vec<((usize, usize), f64)> = bends_inside(&s).into_iter().filter(|&(_, b)| b > std::f64::consts::FRAC_PI_2).collect();
+        wanted.sort_by(|x, y| x.0.cmp(&y.0));
+        assert!(!wanted.is_empty(), "precondition: {name} creases ({})", mesh_checks::report(&s));
+        assert_eq!(s.stats.shortfall, Some(dformer::simulate::Shortfall::Fold), "{name}");
+        let mut got: Vec<((usize, usize), f64)> = s.creases.iter().map(|c| ((c.vertices[0].min(c.vertices[1]), c.vertices[0].max(c.vertices[1])), c.bend)).collect();
+        got.sort_by(|x, y| x.0.cmp(&y.0));
+        assert_eq!(got.iter().map(|g| g.0).collect::<Vec<_>>(), wanted.iter().map(|w| w.0).collect::<Vec<_>>(), "{name}: wanted the edges bent by more than 90°");
+        for ((edge, bend), (_, want)) in got.iter().zip(&wanted) {
+            assert!((bend - want).abs() <= 1e-9, "{name}: edge {edge:?} bends by {want}, reported {bend}");
+        }
+        for c in &s.creases {
+            let [i, j] = c.vertices;
+            let on = s.triangles.iter().zip(&s.piece).filter(|(t, _)| t.contains(&i) && t.contains(&j)).map(|(_, &p)| p).collect::<Vec<_>>();
+            assert_eq!(on, [c.piece, c.piece], "{name}: crease {i}–{j} lies between two triangles of piece {}", c.piece);
+        }
+    }
+    let pebble = shapes::pebble();
+    let s = run(&pebble, &shapes::circle_for(&pebble), 0.0, 256, 5000);
+    assert!(s.stats.converged && s.creases.is_empty(), "Pebble: converged {}, {} creases", s.stats.converged, s.creases.len());
+    // A flat triangle (80 × 20) on a circle: a convex pair, converged, whose Alexandrov
+    // polyhedron bends by 133° across a chord inside the triangle. That is an edge of the convex
+    // form, not a crease.
+    let flat = shapes::polyline(&[(0.0, 0.0), (80.0, 0.0), (40.0, 20.0)]);
+    let s = run(&flat, &shapes::circle_for(&flat), 0.0, 128, 5000);
+    let bend = max_bend_inside(&s).to_degrees();
+    assert!(s.stats.converged && bend > 90.0, "precondition: a converged convex form with a chord bent by more than 90°, got {bend:.1}°");
+    assert!(s.creases.is_empty(), "flat triangle on a circle: wanted no creases, got {}", s.creases.len());
+}

@@ -161,6 +161,7 @@ test('simulateWithProgress reports rising stages of a non-convex solve and retur
 // inside a piece; both checked against the mesh here. An L glued to a circle keeps every edge
 // within 1e-3 of its flat length without crossing, but creases the circle by more than 90°:
 // "fold", where the panel used to say the pieces "stretch up to 0 %". A converged pair: null.
+// `creases` lists where it creases, checked against the same mesh; a converged pair has none.
 test('stats.shortfall names the promise an unconverged answer misses; maxBend is the mesh\'s', () => {
   const poly = (pts) => ({ closed: true, points: pts.map((a) => ({ anchor: a, left: a, right: a })) });
   const L = poly([[0, 0], [80, 0], [80, 40], [40, 40], [40, 80], [0, 80]]);
@@ -178,19 +179,31 @@ test('stats.shortfall names the promise an unconverged answer misses; maxBend is
   const normal = r.triangles.map(([i, j, k]) => cross(sub(x[j], x[i]), sub(x[k], x[i])));
   const owner = new Map();
   let bend = 0;
+  const creased = new Map(); // "i,j" (i < j) → [piece, bend] of every edge bent by more than 90°
   r.triangles.forEach((t, f) => {
     for (let q = 0; q < 3; q++) {
       const g = owner.get(`${t[(q + 1) % 3]},${t[q]}`);
       if (g === undefined) { owner.set(`${t[q]},${t[(q + 1) % 3]}`, f); continue; }
       if (r.piece[g] !== r.piece[f]) continue;
-      bend = Math.max(bend, Math.atan2(Math.hypot(...cross(normal[f], normal[g])), dot(normal[f], normal[g])));
+      const b = Math.atan2(Math.hypot(...cross(normal[f], normal[g])), dot(normal[f], normal[g]));
+      bend = Math.max(bend, b);
+      if (b > Math.PI / 2) creased.set([t[q], t[(q + 1) % 3]].sort((u, v) => u - v).join(','), [r.piece[f], b]);
     }
   });
   assert.ok(Math.abs(r.stats.maxBend - bend) < 1e-9, `maxBend: wanted ${bend} from the mesh, got ${r.stats.maxBend}`);
+  // `creases` says where: exactly the edges bent by more than 90°, with their piece and bend.
+  assert.equal(r.creases.length, creased.size, `wanted ${creased.size} creases from the mesh, got ${r.creases.length}`);
+  for (const c of r.creases) {
+    const want = creased.get([...c.vertices].sort((u, v) => u - v).join(','));
+    assert.ok(want, `crease ${c.vertices} is no edge bent by more than 90°`);
+    assert.equal(c.piece, want[0]);
+    assert.ok(Math.abs(c.bend - want[1]) < 1e-9, `crease ${c.vertices}: wanted ${want[1]}, got ${c.bend}`);
+  }
   assert.ok(strain <= 1e-3 && bend > Math.PI / 2 && !r.stats.converged,
     `precondition: an isometric, creased L (strain ${strain.toExponential(2)}, bend ${(bend * 180 / Math.PI).toFixed(1)}°, converged ${r.stats.converged})`);
   assert.equal(r.stats.shortfall, 'fold');
   const ok = m.simulate([e, e], { offset: P / 4, resolution: 128 });
   assert.ok(ok.stats.converged);
   assert.equal(ok.stats.shortfall, null);
+  assert.deepEqual(ok.creases, []);
 });

@@ -4,7 +4,7 @@
 use super::path::PathDto;
 use crate::error::{Error, Result};
 use crate::simulate::progress::Progress;
-use crate::simulate::{self, SimulateOptions, Simulation, Stats};
+use crate::simulate::{self, Crease, SimulateOptions, Simulation, Stats};
 use serde::{Deserialize, Serialize};
 
 /// `options` of `simulate`; every field optional.
@@ -71,7 +71,23 @@ impl From<&Stats> for StatsDto {
     }
 }
 
-/// `{ vertices, triangles, piece, seam, flat, stats }`
+/// One of `creases`: an interior edge of a non-convex pair's piece bent by more than 90°
+/// (see [`crate::simulate::Crease`]): `piece` 0 (A) or 1 (B), `vertices` the edge's two
+/// indices into `vertices`, `bend` radians.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct CreaseDto {
+    pub piece: u8,
+    pub vertices: [usize; 2],
+    pub bend: f64,
+}
+
+impl From<&Crease> for CreaseDto {
+    fn from(c: &Crease) -> Self {
+        CreaseDto { piece: c.piece, vertices: c.vertices, bend: c.bend }
+    }
+}
+
+/// `{ vertices, triangles, piece, seam, flat, creases, stats }`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SimulateDto {
     pub vertices: Vec<[f64; 3]>,
@@ -81,6 +97,10 @@ pub struct SimulateDto {
     /// `flat[t]`: triangle `t`'s corners on its own flat piece, input coordinates, the corner
     /// order of `triangles[t]` (see [`crate::simulate::Simulation::flat`]).
     pub flat: Vec<[[f64; 2]; 3]>,
+    /// Where a non-convex pair's answer creases (`stats.shortfall` `"fold"`): empty otherwise.
+    /// Absent in results of versions before 0.1.0's crease report, hence the default.
+    #[serde(default)]
+    pub creases: Vec<CreaseDto>,
     pub stats: StatsDto,
 }
 
@@ -92,6 +112,7 @@ impl From<&Simulation> for SimulateDto {
             piece: s.piece.clone(),
             seam: s.seam.clone(),
             flat: s.flat.clone(),
+            creases: s.creases.iter().map(CreaseDto::from).collect(),
             stats: StatsDto::from(&s.stats),
         }
     }

@@ -111,7 +111,7 @@ use crate::contour::Contour;
 use mesh::Solution;
 use crate::error::Result;
 pub use options::SimulateOptions;
-pub use stats::{Shortfall, Stats};
+pub use stats::{Crease, Shortfall, Stats};
 
 /// A solved D-form: a closed triangle mesh. Its first vertices are the seam vertices; a
 /// non-convex pair's answer from the sheet path has interior vertices after them.
@@ -131,6 +131,10 @@ pub struct Simulation {
     /// `|flat[t][a] − flat[t][b]|` is the isometry check, and a point given by barycentric
     /// coordinates in `flat[t]` maps to the same coordinates in the 3D triangle.
     pub flat: Vec<[[f64; 2]; 3]>,
+    /// A non-convex pair's interior edges bent by more than [`checks::FOLD_BEND`] inside a
+    /// piece ([`stats::Crease`]): empty unless `stats.shortfall` is a fold (or a worse
+    /// shortfall hides one); always empty for a convex pair.
+    pub creases: Vec<stats::Crease>,
     pub stats: Stats,
 }
 

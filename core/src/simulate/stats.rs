@@ -75,12 +75,27 @@ impl Shortfall {
     }
 }
 
-/// Fills `max_bend` and `shortfall` of `sim` from its mesh; `folds` says whether a sharp bend
-/// counts against it (a non-convex pair's; a convex pair's sharp chords are edges of its
-/// Alexandrov polyhedron).
+/// An interior edge of a piece bent by more than [`crate::simulate::checks::FOLD_BEND`] in a
+/// non-convex pair's answer: where the sheet creases ([`Shortfall::Fold`]), so that a host can
+/// show where, not only that.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Crease {
+    /// 0 for piece A, 1 for piece B.
+    pub piece: u8,
+    /// The edge's two vertices (indices into the result's vertices).
+    pub vertices: [usize; 2],
+    /// The angle between the normals of its two triangles, radians (π: folded back).
+    pub bend: f64,
+}
+
+/// Fills `max_bend`, `shortfall` and `creases` of `sim` from its mesh; `folds` says whether a
+/// sharp bend counts against it (a non-convex pair's; a convex pair's sharp chords are edges of
+/// its Alexandrov polyhedron, not creases).
 pub fn judge(sim: &mut Simulation, folds: bool) {
-    let bend = max_bend_inside(&sim.vertices, &sim.triangles, &sim.piece);
+    let bends = bends_inside(&sim.vertices, &sim.triangles, &sim.piece);
+    let bend = bends.iter().map(|c| c.bend).fold(0.0, f64::max);
     sim.stats.max_bend = bend;
+    sim.creases = if folds { bends.into_iter().filter(|c| c.bend > super::checks::FOLD_BEND).collect() } else { Vec::new() };
     sim.stats.shortfall = if sim.stats.converged {
         None
     } else if sim.stats.max_strain > super::sheet::STRAIN_TARGET {
@@ -96,12 +111,18 @@ pub fn judge(sim: &mut Simulation, folds: bool) {
 
 /// Largest angle between the normals of two triangles of the same piece sharing an edge.
 pub fn max_bend_inside(x: &[V3], triangles: &[[usize; 3]], piece: &[u8]) -> f64 {
+    bends_inside(x, triangles, piece).iter().map(|c| c.bend).fold(0.0, f64::max)
+}
+
+/// Every edge shared by two triangles of the same piece, with the angle between their normals
+/// (edges of a degenerate triangle left out), in the order the triangles first meet them.
+pub fn bends_inside(x: &[V3], triangles: &[[usize; 3]], piece: &[u8]) -> Vec<Crease> {
     let mut owner = super::metric::KeyMap::default();
     let normal = |t: usize| {
         let [a, b, c] = triangles[t];
         cross(sub(x[b], x[a]), sub(x[c], x[a]))
     };
-    let mut worst = 0.0f64;
+    let mut out = Vec::new();
     for (t, tri) in triangles.iter().enumerate() {
         for m in 0..3 {
             let (i, j) = (tri[m], tri[(m + 1) % 3]);
@@ -109,7 +130,7 @@ pub fn max_bend_inside(x: &[V3], triangles: &[[usize; 3]], piece: &[u8]) -> f64 
                 Some(&u) if piece[u] == piece[t] => {
                     let (n1, n2) = (normal(u), normal(t));
                     if norm(n1) > 0.0 && norm(n2) > 0.0 {
-                        worst = worst.max(norm(cross(n1, n2)).atan2(dot(n1, n2)));
+                        out.push(Crease { piece: piece[t], vertices: [j, i], bend: norm(cross(n1, n2)).atan2(dot(n1, n2)) });
                     }
                 }
                 Some(_) => {}
@@ -119,7 +140,7 @@ pub fn max_bend_inside(x: &[V3], triangles: &[[usize; 3]], piece: &[u8]) -> f64 
             }
         }
     }
-    worst
+    out
 }
 
 
@@ -230,5 +251,5 @@ pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
         max_bend: 0.0,
         shortfall: None,
     };
-    Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, stats }
+    Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, creases: Vec::new(), stats }
 }

@@ -111,6 +111,12 @@ pub fn max_bend_inside(s: &Simulation) -> f64 {
 
 /// [`max_bend_inside`] over the edges `(i, j)` that `keep` accepts.
 pub fn max_bend_inside_at(s: &Simulation, keep: impl Fn(usize, usize) -> bool) -> f64 {
+    bends_inside(s).into_iter().filter(|&((i, j), _)| keep(i, j)).map(|(_, b)| b).fold(0.0, f64::max)
+}
+
+/// Every edge `(i, j)` shared by two triangles of the same piece (each once, `i < j`) and the
+/// angle between their normals.
+pub fn bends_inside(s: &Simulation) -> Vec<((usize, usize), f64)> {
     let mut owner: HashMap<(usize, usize), usize> = HashMap::new();
     let normal = |t: usize| {
         let [a, b, c] = s.triangles[t];
@@ -118,21 +124,21 @@ pub fn max_bend_inside_at(s: &Simulation, keep: impl Fn(usize, usize) -> bool) -
         let l = norm(n);
         n.map(|v| v / l)
     };
-    let mut worst = 0.0f64;
+    let mut out = Vec::new();
     for (t, tri) in s.triangles.iter().enumerate() {
         for (a, b) in [(0, 1), (1, 2), (2, 0)] {
             let (i, j) = (tri[a], tri[b]);
             if let Some(&u) = owner.get(&(j, i)) {
-                if s.piece[u] == s.piece[t] && keep(i, j) {
+                if s.piece[u] == s.piece[t] {
                     let (n1, n2) = (normal(u), normal(t));
-                    worst = worst.max(norm(cross(n1, n2)).atan2(dot(n1, n2)));
+                    out.push(((i.min(j), i.max(j)), norm(cross(n1, n2)).atan2(dot(n1, n2))));
                 }
             } else {
                 owner.insert((i, j), t);
             }
         }
     }
-    worst
+    out
 }
 
 /// Whether segment p–q crosses triangle (a, b, c) strictly inside both (Möller–Trumbore with

@@ -112,5 +112,5 @@ pub fn simulation(pieces: &SeamPieces, mesh: &SheetMesh, shell: &Shell, x: &[V3]
         max_bend: 0.0,
         shortfall: None,
     };
-    Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, stats }
+    Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, creases: Vec::new(), stats }
 }
