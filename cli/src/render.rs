@@ -39,9 +39,10 @@ fn mix(a: V, ka: f64, b: V, kb: f64) -> V {
     [ka * a[0] + kb * b[0], ka * a[1] + kb * b[1], ka * a[2] + kb * b[2]]
 }
 
-/// Piece A warm, piece B cool (the panel's colours); the seam red.
+/// Piece A warm, piece B cool (the panel's colours); the seam red; creases violet.
 pub const COLORS: [[f64; 3]; 2] = [[222.0, 170.0, 110.0], [128.0, 166.0, 214.0]];
 const SEAM: &str = "rgb(192,24,42)";
+const CREASE: &str = "rgb(112,32,168)";
 
 /// An orthographic camera: `toward` points from the form to the viewer; `right` and `up` span
 /// the picture plane; `light` is the direction light comes from.
@@ -91,6 +92,26 @@ fn num(x: f64) -> String {
 }
 
 /// The SVG picture of `form` (lengths in `unit`) seen with `view`, `caption` written above it.
+/// Path data of the edges `(i, j)`, in order, that a front face borders (`front`, each edge as
+/// `(min, max)`): consecutive visible edges sharing a vertex are one subpath.
+fn visible_path(edges: &[(usize, usize)], front: &HashSet<(usize, usize)>, at: impl Fn(usize) -> [f64; 2]) -> String {
+    let mut d = String::new();
+    let mut last = None;
+    for &(i, j) in edges {
+        if !front.contains(&(i.min(j), i.max(j))) {
+            last = None;
+            continue;
+        }
+        let (p, q) = (at(i), at(j));
+        if last != Some(i) {
+            d.push_str(&format!("M{},{}", num(p[0]), num(p[1])));
+        }
+        d.push_str(&format!("L{},{}", num(q[0]), num(q[1])));
+        last = Some(j);
+    }
+    d
+}
+
 pub fn render(form: &SimulateDto, view: &View, unit: &str, caption: &str) -> String {
     let vs = &form.vertices;
     let project = |p: V| [dot(p, view.right), -dot(p, view.up)];
@@ -163,25 +184,20 @@ pub fn render(form: &SimulateDto, view: &View, unit: &str, caption: &str) -> Str
             })
         })
         .collect();
-    let mut d = String::new();
     let n = form.seam.len();
-    let mut open = false;
-    for k in 0..n {
-        let (i, j) = (form.seam[k], form.seam[(k + 1) % n]);
-        if front.contains(&(i.min(j), i.max(j))) {
-            let (p, q) = (at(screen[i]), at(screen[j]));
-            if !open {
-                d.push_str(&format!("M{},{}", num(p[0]), num(p[1])));
-            }
-            d.push_str(&format!("L{},{}", num(q[0]), num(q[1])));
-            open = true;
-        } else {
-            open = false;
-        }
-    }
+    let seam: Vec<(usize, usize)> = (0..n).map(|k| (form.seam[k], form.seam[(k + 1) % n])).collect();
     out.push_str(&format!(
-        "<path id=\"seam\" d=\"{d}\" fill=\"none\" stroke=\"{SEAM}\" stroke-width=\"1.6\" stroke-linecap=\"round\" stroke-linejoin=\"round\"/>\n"
+        "<path id=\"seam\" d=\"{}\" fill=\"none\" stroke=\"{SEAM}\" stroke-width=\"1.6\" stroke-linecap=\"round\" stroke-linejoin=\"round\"/>\n",
+        visible_path(&seam, &front, |i| at(screen[i]))
     ));
+    // Where a non-convex pair's answer creases (`creases`), where a front face borders it.
+    if !form.creases.is_empty() {
+        let creases: Vec<(usize, usize)> = form.creases.iter().map(|c| (c.vertices[0], c.vertices[1])).collect();
+        out.push_str(&format!(
+            "<path id=\"creases\" d=\"{}\" fill=\"none\" stroke=\"{CREASE}\" stroke-width=\"2.4\" stroke-linecap=\"round\"/>\n",
+            visible_path(&creases, &front, |i| at(screen[i]))
+        ));
+    }
 
     // Scale bar: a round length about a quarter of the picture's width.
     let len = round_length(span[0] / 4.0);

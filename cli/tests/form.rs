@@ -280,6 +280,12 @@ const L_AND_CIRCLE: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" width="300
 
 /// The sharpest bend (degrees) between two faces of one OBJ group (a piece) sharing an edge.
 fn max_bend_in_groups(text: &str) -> f64 {
+    bends_in_groups(text).into_iter().map(|(_, b)| b).fold(0.0, f64::max)
+}
+
+/// Every edge `(i, j)` (0-based, `i < j`) shared by two faces of one OBJ group and their bend
+/// (degrees): the angle between the faces' normals.
+fn bends_in_groups(text: &str) -> Vec<((usize, usize), f64)> {
     let (v, _) = parse_obj(text);
     let mut group: Vec<Vec<[usize; 3]>> = Vec::new();
     for line in text.lines() {
@@ -292,7 +298,7 @@ fn max_bend_in_groups(text: &str) -> f64 {
     }
     let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
     let cross = |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-    let mut worst = 0.0f64;
+    let mut out = Vec::new();
     for faces in &group {
         let mut owner = std::collections::HashMap::new();
         for f in faces {
@@ -302,7 +308,7 @@ fn max_bend_in_groups(text: &str) -> f64 {
                 match owner.get(&(j, i)) {
                     Some(&m) => {
                         let c = cross(m, n);
-                        worst = worst.max(dot(c, c).sqrt().atan2(dot(m, n)).to_degrees());
+                        out.push(((i.min(j), i.max(j)), dot(c, c).sqrt().atan2(dot(m, n)).to_degrees()));
                     }
                     None => {
                         owner.insert((i, j), n);
@@ -311,7 +317,7 @@ fn max_bend_in_groups(text: &str) -> f64 {
             }
         }
     }
-    worst
+    out
 }
 
 /// `converged  no: … the pieces would have to stretch` was printed for every unconverged form;
@@ -337,4 +343,60 @@ fn test_issue_14_an_l_on_a_circle_is_called_creased_by_its_meshs_sharpest_bend()
     assert!(j["maxStrain"].as_f64().unwrap() <= 1e-3, "{j}");
     // The OBJ rounds coordinates, so the bend recomputed from it is the mesh's to about 1e-4°.
     assert!((j["maxBendDegrees"].as_f64().unwrap() - bend).abs() <= 1e-2, "wanted {bend}° from the OBJ: {j}");
+}
+
+/// The picture of a creased form showed the crease only as shading. It now draws every edge
+/// bent by more than 90° that a front face borders as `<path id="creases">`, over the faces:
+/// its segments are exactly those edges, found here from the OBJ written by the same solve and
+/// located through the picture's own polygons (each corner drawn where its vertex projects).
+#[test]
+fn test_issue_14_the_picture_of_a_creased_form_draws_its_creases() {
+    let svg = scratch("l-circle-pic.svg", L_AND_CIRCLE);
+    let (obj, pic) = (out_path("l-circle-creases.obj"), out_path("l-circle-creases.svg"));
+    let (code, _, err) = dformer(&["form", svg.to_str().unwrap(), "-o", obj.to_str().unwrap(), "-o", pic.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let creased: Vec<(usize, usize)> = bends_in_groups(&std::fs::read_to_string(&obj).unwrap()).into_iter().filter(|&(_, b)| b > 90.0).map(|(e, _)| e).collect();
+    assert!(!creased.is_empty(), "precondition: the L creases the circle");
+    let text = std::fs::read_to_string(&pic).unwrap();
+    let doc = roxmltree::Document::parse(&text).expect("well-formed SVG");
+    let (_, f) = parse_obj(&std::fs::read_to_string(&obj).unwrap());
+    // Where each vertex of a front face is drawn, and the edges front faces border.
+    let mut at: std::collections::HashMap<usize, [f64; 2]> = std::collections::HashMap::new();
+    let mut front = std::collections::HashSet::new();
+    let polys: Vec<_> = doc.descendants().filter(|n| n.has_tag_name("polygon")).collect();
+    for p in &polys {
+        let t = f[p.attribute("data-t").unwrap().parse::<usize>().unwrap()];
+        for (m, xy) in p.attribute("points").unwrap().split(' ').enumerate() {
+            let (x, y) = xy.split_once(',').unwrap();
+            at.insert(t[m], [x.parse().unwrap(), y.parse().unwrap()]);
+            front.insert((t[m].min(t[(m + 1) % 3]), t[m].max(t[(m + 1) % 3])));
+        }
+    }
+    let near = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).hypot(a[1] - b[1]) < 0.02;
+    let mut wanted: Vec<([f64; 2], [f64; 2])> = creased.iter().filter(|e| front.contains(e)).map(|&(i, j)| (at[&i], at[&j])).collect();
+    let path = doc.descendants().find(|n| n.attribute("id") == Some("creases"));
+    if wanted.is_empty() {
+        assert!(path.map_or(true, |p| p.attribute("d") == Some("")), "no crease faces the viewer, yet one is drawn");
+        return;
+    }
+    let path = path.expect("the creases are drawn");
+    assert!(path.range().start > polys.last().unwrap().range().end, "the creases are drawn before the faces (hidden under them)");
+    // The path's segments: "M x,y L x,y L x,y M …".
+    let d = path.attribute("d").unwrap().replace('M', " M").replace('L', " L");
+    let mut segments = Vec::new();
+    let mut last: Option<[f64; 2]> = None;
+    for token in d.split_whitespace() {
+        let (x, y) = token[1..].split_once(',').unwrap();
+        let q = [x.parse::<f64>().unwrap(), y.parse::<f64>().unwrap()];
+        if token.starts_with('L') {
+            segments.push((last.expect("a segment after a move"), q));
+        }
+        last = Some(q);
+    }
+    assert_eq!(segments.len(), wanted.len(), "wanted one segment per visible crease edge");
+    for (a, b) in &segments {
+        let k = wanted.iter().position(|(p, q)| (near(*a, *p) && near(*b, *q)) || (near(*a, *q) && near(*b, *p)));
+        let k = k.unwrap_or_else(|| panic!("segment {a:?}–{b:?} is no crease edge of the mesh"));
+        wanted.remove(k);
+    }
 }
