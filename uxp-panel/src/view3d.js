@@ -43,6 +43,7 @@
   }
 
   var SEAM_RGB = [192, 24, 42];
+  var CREASE_RGB = [112, 32, 168]; // where a non-convex pair's answer creases (result.creases)
   /** A depth-tested line (seam) of the given pixel width, drawn over the surface it lies on. */
   function line(px, depth, W, H, a, b, bias, width, rgb) {
     var col = rgb || SEAM_RGB;
@@ -172,6 +173,9 @@
           line(px, depth, W, H, P[mesh.seam[j]], P[mesh.seam[(j + 1) % mesh.seam.length]], bias, 2 * ss);
         }
       }
+      (mesh.creases || []).forEach(function (c) {
+        line(px, depth, W, H, P[c.vertices[0]], P[c.vertices[1]], 0.01 * radius, 3 * ss, CREASE_RGB);
+      });
       var labels = marks ? drawMarks(px, depth, W, H, P, s, ss) : [];
       bctx.putImageData(image, 0, 0);
       ctx.imageSmoothingEnabled = true;
