@@ -520,7 +520,7 @@
     var tail = ' OBJ/STL export this approximate shape.';
     if (st.shortfall === 'fold') {
       return '⚠ Approximate preview: both pieces keep their flat shape here, but one is bent sharply, by up to ' +
-        (st.maxBend * 180 / Math.PI).toFixed(0) + '°, along a line inside it (drawn in violet), where real material creases. The real D-form will ' +
+        (st.maxBend * 180 / Math.PI).toFixed(0) + '°, along a line inside it (drawn in violet, dashed where it is behind the surface), where real material creases. The real D-form will ' +
         'look different there: it may crease, or take a smoother shape the solver did not find. Rounding sharp or deeply ' +
         'concave parts of the outline usually avoids it.' + tail;
     }

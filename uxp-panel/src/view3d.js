@@ -44,12 +44,16 @@
 
   var SEAM_RGB = [192, 24, 42];
   var CREASE_RGB = [112, 32, 168]; // where a non-convex pair's answer creases (result.creases)
-  /** A depth-tested line (seam) of the given pixel width, drawn over the surface it lies on. */
-  function line(px, depth, W, H, a, b, bias, width, rgb) {
+  /**
+   * A depth-tested line (seam) of the given pixel width, drawn over the surface it lies on; with
+   * `dash` (pixels), dashed. A `bias` of Infinity draws it through the surface.
+   */
+  function line(px, depth, W, H, a, b, bias, width, rgb, dash) {
     var col = rgb || SEAM_RGB;
     var n = Math.ceil(Math.max(Math.abs(b[0] - a[0]), Math.abs(b[1] - a[1]))) + 1;
     var half = width / 2;
     for (var i = 0; i <= n; i++) {
+      if (dash && Math.floor(i / dash) % 2) continue;
       var t = i / n;
       var x = a[0] + t * (b[0] - a[0]);
       var y = a[1] + t * (b[1] - a[1]);
@@ -173,8 +177,12 @@
           line(px, depth, W, H, P[mesh.seam[j]], P[mesh.seam[(j + 1) % mesh.seam.length]], bias, 2 * ss);
         }
       }
+      // Creases: dashed through the surface (a crease is often on the far piece), solid where seen.
       (mesh.creases || []).forEach(function (c) {
-        line(px, depth, W, H, P[c.vertices[0]], P[c.vertices[1]], 0.01 * radius, 3 * ss, CREASE_RGB);
+        var a = P[c.vertices[0]];
+        var b = P[c.vertices[1]];
+        line(px, depth, W, H, a, b, Infinity, 2 * ss, CREASE_RGB, 3 * ss);
+        line(px, depth, W, H, a, b, 0.01 * radius, 3 * ss, CREASE_RGB);
       });
       var labels = marks ? drawMarks(px, depth, W, H, P, s, ss) : [];
       bctx.putImageData(image, 0, 0);
