@@ -554,3 +554,35 @@ fn test_issue_14_a_creased_form_says_where_it_creases() {
     assert!(s.stats.converged && bend > 90.0, "precondition: a converged convex form with a chord bent by more than 90°, got {bend:.1}°");
     assert!(s.creases.is_empty(), "flat triangle on a circle: wanted no creases, got {}", s.creases.len());
 }
+
+/// The panel told a student whose form creased that "rounding sharp or deeply concave parts of
+/// the outline usually avoids it". For an L on a circle that is wrong: its 40 mm notch (half its
+/// width) creases the circle by 125° with sharp corners and by 132° with every corner rounded
+/// by 5 mm (115° at 10 mm); what avoids the crease is a shallower notch (20 mm: the D-form,
+/// sharp or rounded). Likewise the heart drawn with corners creases the circle with its dip
+/// 20 mm below the lobes' tops (111°) and not with it 6 mm below. The advice now says "make a
+/// deep inward bay shallower; rounding its corners does not help", and this test keeps it true
+/// at the panel's 256 seam vertices, every verdict from the mesh (`promise`). (Near the
+/// threshold the verdict turns on the mesh: the heart's dip at 8–16 mm creases at 256 seam
+/// vertices and not at 128, or the other way round.)
+#[test]
+fn test_issue_14_a_shallower_bay_avoids_the_crease_that_rounded_corners_keep() {
+    let notched = |depth: f64, r: f64| {
+        let w = 80.0 - depth;
+        shapes::rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (80.0, w), (w, w), (w, 80.0), (0.0, 80.0)], r)
+    };
+    let verdict = |a: &Contour| {
+        let s = run(a, &shapes::circle_for(a), 0.0, 256, 5000);
+        (promise(&s), mesh_checks::report(&s))
+    };
+    for r in [0.0, 5.0] {
+        let (deep, why) = verdict(&notched(40.0, r));
+        assert!(matches!(&deep, Err(e) if e.contains("fold")), "an L with a 40 mm notch, corners rounded by {r} mm: wanted a crease, got {deep:?} ({why})");
+        let (shallow, why) = verdict(&notched(20.0, r));
+        assert_eq!(shallow, Ok(()), "an L with a 20 mm notch, corners rounded by {r} mm: wanted the D-form ({why})");
+    }
+    let (deep, why) = verdict(&shapes::drawn_heart_with_dip(40.0));
+    assert!(matches!(&deep, Err(e) if e.contains("fold")), "the drawn heart, dip 20 mm deep: wanted a crease, got {deep:?} ({why})");
+    let (shallow, why) = verdict(&shapes::drawn_heart_with_dip(54.0));
+    assert_eq!(shallow, Ok(()), "the drawn heart, dip 6 mm deep: wanted the D-form ({why})");
+}

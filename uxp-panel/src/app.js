@@ -514,15 +514,20 @@
    * have to stretch (near-square rectangles on a circle, spiky outlines), the sheets pass through
    * each other, or both keep their flat shape but one is creased (an L or a drawn heart on a
    * circle: the circle bends sharply along a line). Each gets its own plain words: a creased form
-   * is no stretched guess, and telling a student it "stretches up to 0 %" explained nothing.
+   * is no stretched guess, and telling a student it "stretches up to 0 %" explained nothing. The
+   * fold's advice is what the core's tests find (simulate_nonconvex.rs,
+   * test_issue_14_a_shallower_bay_avoids_the_crease_that_rounded_corners_keep): an L whose notch
+   * is half its width creases the circle with its corners sharp or rounded by 5–15 mm; with a
+   * notch of a quarter it does not, and a heart drawn with corners stops creasing it when its
+   * dip is made shallower.
    */
   function approximateText(st) {
     var tail = ' OBJ/STL export this approximate shape.';
     if (st.shortfall === 'fold') {
       return '⚠ Approximate preview: both pieces keep their flat shape here, but one is bent sharply, by up to ' +
         (st.maxBend * 180 / Math.PI).toFixed(0) + '°, along a line inside it (drawn in violet, dashed where it is behind the surface), where real material creases. The real D-form will ' +
-        'look different there: it may crease, or take a smoother shape the solver did not find. Rounding sharp or deeply ' +
-        'concave parts of the outline usually avoids it.' + tail;
+        'look different there: it may crease, or take a smoother shape the solver did not find. Making a deep inward bay ' +
+        '(an L\'s notch, a heart\'s dip) shallower usually avoids it; rounding its corners does not.' + tail;
     }
     if (st.shortfall === 'unsettled') {
       return '⚠ Approximate preview: the solver stopped before this shape settled (after ' + st.iterations + ' steps). The real ' +

@@ -107,6 +107,42 @@ pub fn drawn_heart() -> Contour {
     Contour::new(knots, 0).unwrap()
 }
 
+/// [`drawn_heart`] with its top dip, the corner between the lobes, at height `y` instead of 40
+/// (the lobes' tops are at 60): a shallower bay for a larger `y`. The dip's handles keep their
+/// share of the rise to the lobes.
+pub fn drawn_heart_with_dip(y: f64) -> Contour {
+    let mut knots = drawn_heart().knots().to_vec();
+    let rise = y + 10.0 * (60.0 - y) / 20.0;
+    knots[0] = Knot { anchor: Point::new(0.0, y), left: Point::new(12.0, rise), right: Point::new(-12.0, rise) };
+    Contour::new(knots, 0).unwrap()
+}
+
+/// The polygon `pts` (counter-clockwise) with every corner rounded by a circular arc of radius
+/// `r` (one cubic per arc, from the tangent point on one side to the other's), or the polygon
+/// itself for `r = 0`.
+pub fn rounded_polygon(pts: &[(f64, f64)], r: f64) -> Contour {
+    if r == 0.0 {
+        return polyline(pts);
+    }
+    let n = pts.len();
+    let unit = |a: (f64, f64), b: (f64, f64)| {
+        let l = (b.0 - a.0).hypot(b.1 - a.1);
+        ((b.0 - a.0) / l, (b.1 - a.1) / l)
+    };
+    let mut knots = Vec::new();
+    for k in 0..n {
+        let b = pts[k];
+        let (u, v) = (unit(b, pts[(k + n - 1) % n]), unit(b, pts[(k + 1) % n]));
+        let inside = (u.0 * v.0 + u.1 * v.1).clamp(-1.0, 1.0).acos();
+        let t = r / (inside / 2.0).tan();
+        let h = 4.0 / 3.0 * ((std::f64::consts::PI - inside) / 4.0).tan() * r;
+        let (a, c) = (Point::new(b.0 + u.0 * t, b.1 + u.1 * t), Point::new(b.0 + v.0 * t, b.1 + v.1 * t));
+        knots.push(Knot { anchor: a, left: a, right: Point::new(a.x - u.0 * h, a.y - u.1 * h) });
+        knots.push(Knot { anchor: c, left: Point::new(c.x - v.0 * h, c.y - v.1 * h), right: c });
+    }
+    Contour::new(knots, 0).unwrap()
+}
+
 /// A five-pointed star with rounded tips: r = 50(1 + 0.3 cos 5θ)^... sampled smoothly.
 pub fn rounded_star() -> Contour {
     polar(100, |t| 50.0 * (1.0 + 0.28 * (5.0 * t).cos().powi(3)))
