@@ -173,7 +173,11 @@ proptest! {
         for k in 0..n {
             let d = (u[k][0] - u[k][1]).rem_euclid(perimeter);
             prop_assert!(d.min(perimeter - d) <= glued, "seam vertex {k}: at {} on A but {} on B ({kinks} kinks)", u[k][0], u[k][1]);
-            let along = |k: usize| (u[k][0] - u[0][0] + start).rem_euclid(perimeter);
+            // Measured from the seam's own first vertex: with `start` added as well (until stop
+            // 32) a pair with a kink whose last seam vertex lay within `start` of the end
+            // wrapped past the first (proptest's case 1fc29db5: vertex 35 of 36 at 292.69 of a
+            // 294.17 perimeter) and was called out of order.
+            let along = |k: usize| (u[k][0] - u[0][0]).rem_euclid(perimeter);
             prop_assert!(k == 0 || along(k) > along(k - 1), "seam vertices out of order: {:?}", &u[..=k]);
         }
         prop_assert!(u[0][0].min(perimeter - u[0][0]) <= start, "seam vertex 0 is not at A's first anchor ({kinks} kinks)");
