@@ -19,3 +19,5 @@ if [ -f core/examples/simulate_bench.rs ]; then
   printf '\n\033[1m== native simulate (cargo run --release --example simulate_bench) ==\033[0m\n'
   cargo run --quiet --release -p dformer --example simulate_bench
 fi
+printf '\n\033[1m== how often simulate finds the D-form (cargo run --release --example simulate_survey) ==\033[0m\n'
+cargo run --quiet --release -p dformer --example simulate_survey

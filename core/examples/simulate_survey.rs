@@ -1,0 +1,126 @@
+//! How often `simulate` finds the D-form of the pairs students draw (not a test: it prints
+//! counts, to be compared between commits). Run: `cargo run --release -p dformer --example
+//! simulate_survey` (about a minute; `scripts/bench.sh` runs it).
+//!
+//! 1. *Convex pairs*: ellipses, superellipses (|x/a|⁴ + |y/b|⁴ = 1), rectangles with rounded
+//!    corners and rounded polygons, each glued to a circle of its perimeter and to a congruent
+//!    copy of itself (the classic D-form of two equal pieces), at 16 offsets. Alexandrov's theorem
+//!    says each has exactly one convex form, so every unconverged answer is the solver's failure.
+//!    Also counted: answers called converged with an edge more than 1e-3 off its flat length (the
+//!    seam samples' floor at tight corners, see `simulate::density`).
+//! 2. *Organic pairs*: smooth random blobs r = 50(1 + Σ a_k cos(kθ + φ_k)), k = 2…5, glued to a
+//!    circle at a random offset (a fixed xorshift seed), counted by `stats.shortfall`.
+//! 3. *Bays*: an 80 mm L whose notch deepens from 10 to 40 mm, with a circle: where the form
+//!    starts to crease (the panel's advice for a creased form rests on this).
+//!
+//! Every answer is judged by the solver's own `converged` and `shortfall`, which the tests check
+//! against the mesh (`core/tests/simulate_*.rs`).
+
+#[path = "../tests/simulate_common/shapes.rs"]
+mod shapes;
+
+use dformer::contour::Contour;
+use dformer::simulate::{simulate, SimulateOptions, Simulation};
+use std::collections::BTreeMap;
+use std::f64::consts::{PI, TAU};
+
+const N: usize = 256;
+
+fn solve(a: &Contour, b: &Contour, offset: f64) -> Simulation {
+    let o = SimulateOptions { resolution: N, offset: offset * shapes::perimeter(a), ..Default::default() };
+    simulate(a, b, &o).expect("simulate")
+}
+
+fn ellipse(a: f64, b: f64) -> Contour {
+    shapes::polar(64, |t| 1.0 / ((t.cos() / a).powi(2) + (t.sin() / b).powi(2)).sqrt())
+}
+
+fn superellipse(a: f64, b: f64) -> Contour {
+    shapes::polar(64, |t| 1.0 / ((t.cos() / a).abs().powi(4) + (t.sin() / b).abs().powi(4)).powf(0.25))
+}
+
+fn convex_pairs() {
+    let mut pieces: Vec<(String, Contour)> = Vec::new();
+    for (a, b) in [(60.0, 40.0), (80.0, 30.0), (50.0, 45.0), (100.0, 20.0)] {
+        pieces.push((format!("ellipse {a}×{b}"), ellipse(a, b)));
+        pieces.push((format!("superellipse {a}×{b}"), superellipse(a, b)));
+        for r in [1.0, 3.0, 8.0] {
+            let rect = [(0.0, 0.0), (2.0 * a, 0.0), (2.0 * a, 2.0 * b), (0.0, 2.0 * b)];
+            pieces.push((format!("rectangle {}×{} r {r}", 2.0 * a, 2.0 * b), shapes::rounded_polygon(&rect, r)));
+        }
+    }
+    for r in [1.0, 4.0] {
+        pieces.push((format!("triangle r {r}"), shapes::rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (30.0, 60.0)], r)));
+        let hexagon: Vec<(f64, f64)> = (0..6).map(|k| (50.0 * (k as f64 * PI / 3.0).cos(), 50.0 * (k as f64 * PI / 3.0).sin())).collect();
+        pieces.push((format!("hexagon r {r}"), shapes::rounded_polygon(&hexagon, r)));
+    }
+    println!("1. Convex pairs, {N} seam vertices, 16 offsets each ([k: strain] unconverged at offset k/16, (k: strain) converged above 1e-3)");
+    let mut by_partner = BTreeMap::new();
+    for partner in ["circle", "congruent copy"] {
+        let (mut good, mut failed, mut over) = (0, 0, 0);
+        for (name, a) in &pieces {
+            let b = if partner == "circle" { shapes::circle_for(a) } else { a.clone() };
+            let mut line = String::new();
+            for k in 0..16 {
+                let s = solve(a, &b, k as f64 / 16.0);
+                if !s.stats.converged {
+                    failed += 1;
+                    line += &format!(" [{k}: {:.0e}]", s.stats.max_strain);
+                } else if s.stats.max_strain > 1e-3 {
+                    over += 1;
+                    line += &format!(" ({k}: {:.1e})", s.stats.max_strain);
+                } else {
+                    good += 1;
+                }
+            }
+            if !line.is_empty() {
+                println!("  {name} + {partner}:{line}");
+            }
+        }
+        by_partner.insert(partner, (good, over, failed));
+    }
+    for (partner, (good, over, failed)) in by_partner {
+        let total = good + over + failed;
+        println!("  with a {partner}: {good} of {total} converged within 1e-3, {over} converged above it, {failed} not converged");
+    }
+}
+
+fn organic_pairs() {
+    let mut seed: u64 = 7;
+    let mut rnd = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % 1_000_000) as f64 / 1e6
+    };
+    let count = 30;
+    let mut tally: BTreeMap<String, usize> = BTreeMap::new();
+    let mut worst_ms: f64 = 0.0;
+    for _ in 0..count {
+        let h: Vec<(f64, f64, f64)> = (2..6).map(|k| (k as f64, (rnd() - 0.5) / k as f64, rnd() * TAU)).collect();
+        let a = shapes::polar(48, |t| 50.0 * (1.0 + h.iter().map(|(k, amp, ph)| amp * (k * t + ph).cos()).sum::<f64>()));
+        let s = solve(&a, &shapes::circle_for(&a), rnd());
+        worst_ms = worst_ms.max(s.stats.ms);
+        let key = s.stats.shortfall.map_or("converged".to_string(), |f| f.name().to_string());
+        *tally.entry(key).or_default() += 1;
+    }
+    println!("2. Organic blobs with a circle, {count} random pairs (seed 7), {N} seam vertices: {tally:?}, slowest {worst_ms:.0} ms native");
+}
+
+fn bays() {
+    print!("3. An 80 mm L with a circle, notch depth → sharpest bend inside a piece (shortfall):");
+    for depth in [10.0, 20.0, 30.0, 40.0] {
+        let w = 80.0 - depth;
+        let a = shapes::rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (80.0, w), (w, w), (w, 80.0), (0.0, 80.0)], 0.0);
+        let s = solve(&a, &shapes::circle_for(&a), 0.0);
+        let why = s.stats.shortfall.map_or("converged", |f| f.name());
+        print!(" {depth} mm → {:.0}° ({why});", s.stats.max_bend.to_degrees());
+    }
+    println!();
+}
+
+fn main() {
+    convex_pairs();
+    organic_pairs();
+    bays();
+}
