@@ -21,7 +21,8 @@ def shortfall_text(stats):
     if why == "fold":
         bend = round(math.degrees(stats["maxBend"]))
         return (f"Approximate shape: the pieces keep their flat lengths, but one is creased by {bend}° inside it, "
-                "where real material creases; the real D-form will look different there.")
+                "where real material creases; the real D-form will look different there. Making a deep "
+                "inward bay (an L's notch, a heart's dip) shallower usually avoids it; rounding its corners does not.")
     if why == "crossing":
         return "Approximate shape: the pieces pass through each other in it; the real D-form will look different."
     if why == "unsettled":

@@ -238,7 +238,8 @@ fn verdict(st: &StatsDto) -> String {
     match (st.converged, st.shortfall.as_deref()) {
         (true, _) => "yes".into(),
         (false, Some("fold")) => format!(
-            "no: an approximate shape; the pieces keep their flat lengths, but one is creased by {}° inside it",
+            "no: an approximate shape; the pieces keep their flat lengths, but one is creased by {}° inside it \
+             (a shallower inward bay usually avoids it; rounding its corners does not)",
             g(st.max_bend.to_degrees().round())
         ),
         (false, Some("crossing")) => "no: an approximate shape; the pieces pass through each other".into(),
