@@ -91,7 +91,6 @@ fn num(x: f64) -> String {
     if s == "-0" { "0".into() } else { s.into() }
 }
 
-/// The SVG picture of `form` (lengths in `unit`) seen with `view`, `caption` written above it.
 /// Path data of the edges `(i, j)`, in order, that a front face borders (`front`, each edge as
 /// `(min, max)`): consecutive visible edges sharing a vertex are one subpath.
 fn visible_path(edges: &[(usize, usize)], front: &HashSet<(usize, usize)>, at: impl Fn(usize) -> [f64; 2]) -> String {
@@ -112,6 +111,7 @@ fn visible_path(edges: &[(usize, usize)], front: &HashSet<(usize, usize)>, at: i
     d
 }
 
+/// The SVG picture of `form` (lengths in `unit`) seen with `view`, `caption` written above it.
 pub fn render(form: &SimulateDto, view: &View, unit: &str, caption: &str) -> String {
     let vs = &form.vertices;
     let project = |p: V| [dot(p, view.right), -dot(p, view.up)];

@@ -376,7 +376,7 @@ fn test_issue_14_the_picture_of_a_creased_form_draws_its_creases() {
     let mut wanted: Vec<([f64; 2], [f64; 2])> = creased.iter().filter(|e| front.contains(e)).map(|&(i, j)| (at[&i], at[&j])).collect();
     let path = doc.descendants().find(|n| n.attribute("id") == Some("creases"));
     if wanted.is_empty() {
-        assert!(path.map_or(true, |p| p.attribute("d") == Some("")), "no crease faces the viewer, yet one is drawn");
+        assert!(path.is_none_or(|p| p.attribute("d") == Some("")), "no crease faces the viewer, yet one is drawn");
         return;
     }
     let path = path.expect("the creases are drawn");

@@ -527,11 +527,11 @@ fn test_issue_14_a_creased_form_says_where_it_creases() {
     for (name, a) in [("L hexagon", shapes::l_shape()), ("drawn heart", shapes::drawn_heart())] {
         let s = run(&a, &shapes::circle_for(&a), 0.0, 256, 5000);
         let mut wanted: Vec<((usize, usize), f64)> = bends_inside(&s).into_iter().filter(|&(_, b)| b > std::f64::consts::FRAC_PI_2).collect();
-        wanted.sort_by(|x, y| x.0.cmp(&y.0));
+        wanted.sort_by_key(|x| x.0);
         assert!(!wanted.is_empty(), "precondition: {name} creases ({})", mesh_checks::report(&s));
         assert_eq!(s.stats.shortfall, Some(dformer::simulate::Shortfall::Fold), "{name}");
         let mut got: Vec<((usize, usize), f64)> = s.creases.iter().map(|c| ((c.vertices[0].min(c.vertices[1]), c.vertices[0].max(c.vertices[1])), c.bend)).collect();
-        got.sort_by(|x, y| x.0.cmp(&y.0));
+        got.sort_by_key(|x| x.0);
         assert_eq!(got.iter().map(|g| g.0).collect::<Vec<_>>(), wanted.iter().map(|w| w.0).collect::<Vec<_>>(), "{name}: wanted the edges bent by more than 90°");
         for ((edge, bend), (_, want)) in got.iter().zip(&wanted) {
             assert!((bend - want).abs() <= 1e-9, "{name}: edge {edge:?} bends by {want}, reported {bend}");

@@ -98,7 +98,7 @@ pub struct SimulateDto {
     /// order of `triangles[t]` (see [`crate::simulate::Simulation::flat`]).
     pub flat: Vec<[[f64; 2]; 3]>,
     /// Where a non-convex pair's answer creases (`stats.shortfall` `"fold"`): empty otherwise.
-    /// Absent in results of versions before 0.1.0's crease report, hence the default.
+    /// Results serialized before creases were reported have none, hence the default.
     #[serde(default)]
     pub creases: Vec<CreaseDto>,
     pub stats: StatsDto,
