@@ -110,8 +110,7 @@ fn organic_pairs() {
 fn bays() {
     print!("3. An 80 mm L with a circle, notch depth → sharpest bend inside a piece (shortfall):");
     for depth in [10.0, 20.0, 30.0, 40.0] {
-        let w = 80.0 - depth;
-        let a = shapes::rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (80.0, w), (w, w), (w, 80.0), (0.0, 80.0)], 0.0);
+        let a = shapes::notched_l(depth, 0.0);
         let s = solve(&a, &shapes::circle_for(&a), 0.0);
         let why = s.stats.shortfall.map_or("converged", |f| f.name());
         print!(" {depth} mm → {:.0}° ({why});", s.stats.max_bend.to_degrees());

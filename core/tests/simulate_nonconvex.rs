@@ -567,18 +567,14 @@ fn test_issue_14_a_creased_form_says_where_it_creases() {
 /// vertices and not at 128, or the other way round.)
 #[test]
 fn test_issue_14_a_shallower_bay_avoids_the_crease_that_rounded_corners_keep() {
-    let notched = |depth: f64, r: f64| {
-        let w = 80.0 - depth;
-        shapes::rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (80.0, w), (w, w), (w, 80.0), (0.0, 80.0)], r)
-    };
     let verdict = |a: &Contour| {
         let s = run(a, &shapes::circle_for(a), 0.0, 256, 5000);
         (promise(&s), mesh_checks::report(&s))
     };
     for r in [0.0, 5.0] {
-        let (deep, why) = verdict(&notched(40.0, r));
+        let (deep, why) = verdict(&shapes::notched_l(40.0, r));
         assert!(matches!(&deep, Err(e) if e.contains("fold")), "an L with a 40 mm notch, corners rounded by {r} mm: wanted a crease, got {deep:?} ({why})");
-        let (shallow, why) = verdict(&notched(20.0, r));
+        let (shallow, why) = verdict(&shapes::notched_l(20.0, r));
         assert_eq!(shallow, Ok(()), "an L with a 20 mm notch, corners rounded by {r} mm: wanted the D-form ({why})");
     }
     let (deep, why) = verdict(&shapes::drawn_heart_with_dip(40.0));

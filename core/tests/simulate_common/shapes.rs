@@ -148,9 +148,16 @@ pub fn rounded_star() -> Contour {
     polar(100, |t| 50.0 * (1.0 + 0.28 * (5.0 * t).cos().powi(3)))
 }
 
-/// An L-shaped hexagon (one reflex corner).
+/// An L-shaped hexagon (one reflex corner): [`notched_l`] with a 40 mm notch, sharp.
 pub fn l_shape() -> Contour {
-    polyline(&[(0.0, 0.0), (80.0, 0.0), (80.0, 40.0), (40.0, 40.0), (40.0, 80.0), (0.0, 80.0)])
+    notched_l(40.0, 0.0)
+}
+
+/// An 80 mm square with a `depth` × `depth` notch cut from its top right corner (an L), every
+/// corner rounded by `r` ([`rounded_polygon`]).
+pub fn notched_l(depth: f64, r: f64) -> Contour {
+    let w = 80.0 - depth;
+    rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (80.0, w), (w, w), (w, 80.0), (0.0, 80.0)], r)
 }
 
 /// An arrow-head quadrilateral (a dart: one reflex corner).
