@@ -202,18 +202,66 @@ pub(crate) fn relax_damped(
     orientation: Orientation,
     damping: Damping,
 ) -> Relaxed {
-    let n = pieces.n;
+    relax_with(&mut Chords { pieces, tri }, x, budget, step_tol, orientation, damping)
+}
+
+/// A triangulation whose edges carry the length equations and whose reflex edges can be
+/// flipped: the chord meshes of the two pieces ([`Chords`]), or an intrinsic triangulation of
+/// the glued metric ([`super::intrinsic::Mesh`]).
+pub(crate) trait Flips {
+    /// Number of vertices.
+    fn vertices(&self) -> usize;
+    /// The length equations of the edges.
+    fn bars(&self) -> Vec<Bar>;
+    /// Makes `x` outward when `orientation` is [`Orientation::Free`], then flips every reflex
+    /// edge that can be flipped (at most [`MAX_FLIPS_PER_EDGE`] times each, counted in `count`).
+    /// Returns the number of flips.
+    fn flip_pass(&mut self, x: &mut [V3], count: &mut [KeyMap; 2], orientation: Orientation) -> usize;
+}
+
+/// The two pieces' chord triangulations as one mesh to relax ([`Flips`]).
+pub(crate) struct Chords<'a> {
+    pub(crate) pieces: &'a SeamPieces,
+    pub(crate) tri: &'a mut [Triangulation; 2],
+}
+
+impl Flips for Chords<'_> {
+    fn vertices(&self) -> usize {
+        self.pieces.n
+    }
+
+    fn bars(&self) -> Vec<Bar> {
+        bars(self.pieces, self.tri)
+    }
+
+    fn flip_pass(&mut self, x: &mut [V3], count: &mut [KeyMap; 2], orientation: Orientation) -> usize {
+        flip_pass(x, self.tri, self.pieces, count, orientation)
+    }
+}
+
+/// Levenberg–Marquardt on the fixed triangulation of `mesh` with the damping schedule
+/// `damping` until the step is negligible (`step_tol`, relative to the shape's size), then one
+/// pass of flips; repeated until nothing flips.
+pub(crate) fn relax_with(
+    mesh: &mut impl Flips,
+    x: &mut Vec<V3>,
+    budget: usize,
+    step_tol: f64,
+    orientation: Orientation,
+    damping: Damping,
+) -> Relaxed {
+    let n = mesh.vertices();
     let mut count = [KeyMap::default(), KeyMap::default()];
     let mut flips = 0;
     for _ in 0..n {
-        let f = flip_pass(x, tri, pieces, &mut count, orientation);
+        let f = mesh.flip_pass(x, &mut count, orientation);
         flips += f;
         if f == 0 {
             break;
         }
     }
     let scale = size(x).max(f64::MIN_POSITIVE);
-    let mut bars = bars(pieces, tri);
+    let mut bars = mesh.bars();
     let mut ne = pattern(n, &bars);
     // Flips since `ne`'s ordering was computed (see [`renew`]).
     let mut since = 0;
@@ -230,10 +278,10 @@ pub(crate) fn relax_damped(
             let slow = c > 0.5 * window.1;
             window = (iterations, c);
             if slow {
-                let f = flip_pass(x, tri, pieces, &mut count, orientation);
+                let f = mesh.flip_pass(x, &mut count, orientation);
                 if f > 0 {
                     flips += f;
-                    bars = self::bars(pieces, tri);
+                    bars = mesh.bars();
                     (ne, since) = renew(ne, since + f, n, &bars);
                     c = cost(x, &bars);
                     lambda = damping.start;
@@ -268,10 +316,10 @@ pub(crate) fn relax_damped(
             continue;
         }
         // The realization of this triangulation is found: fold the reflex chords the other way.
-        let f = flip_pass(x, tri, pieces, &mut count, orientation);
+        let f = mesh.flip_pass(x, &mut count, orientation);
         flips += f;
         if f > 0 {
-            bars = self::bars(pieces, tri);
+            bars = mesh.bars();
             (ne, since) = renew(ne, since + f, n, &bars);
             c = cost(x, &bars);
             lambda = damping.start;
