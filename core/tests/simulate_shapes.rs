@@ -836,3 +836,48 @@ fn test_issue_14_corners_rounded_below_the_seam_step_are_taken_as_corners() {
         }
     }
 }
+
+/// Regression (issue 14): two congruent rectangles with rounded corners glued at an offset, the
+/// classic D-form of two equal pieces, converged at few offsets (strain 1e-2 to 0.5 after 5,000
+/// steps): the form's creases run from a corner of one piece straight across a side both pieces
+/// share into the other, and no mesh whose edges stay inside one piece holds such a crease. The
+/// intrinsic path (Bobenko & Izmestiev's method on an intrinsic triangulation, cut along the seam
+/// afterwards) adds a seam vertex where a crease crosses the seam.
+#[test]
+fn test_issue_14_congruent_rounded_rectangles_crease_across_the_seam() {
+    let r = shapes::rounded_polygon(&[(0.0, 0.0), (200.0, 0.0), (200.0, 40.0), (0.0, 40.0)], 1.0);
+    let p = perimeter(&r);
+    let flat = 2.0 * r.signed_area().abs();
+    for k in [1, 2, 3, 6, 7] {
+        let s = run(&r, &r, k as f64 / 16.0 * p, 256);
+        assert!(s.stats.converged, "offset {k}/16: wanted converged, got {:?}", s.stats);
+        assert_closed(&s);
+        let n = s.seam.len();
+        assert!(n > 256, "offset {k}/16: wanted seam vertices added where creases cross the seam, got {n}");
+        // The seam samples' own floor (A's and B's chords of a seam edge differ at the 1 mm
+        // corners) and at most twice as much again on the chords that flips put in, whose
+        // lengths come from layouts with the seam edges at their mean length.
+        let (strain, floor) = (mesh_checks::max_edge_strain(&s), mesh_checks::seam_floor(&s));
+        assert!(strain <= 3.0 * floor, "offset {k}/16: wanted every edge within 3 × the seam floor {floor:.2e} of its flat length, got {strain:.2e}");
+        let cv = convexity_violation(&s);
+        assert!(cv < 1e-4, "offset {k}/16: a vertex lies {cv:.2e} (relative) outside a face plane");
+        let (v, a) = volume_area(&s);
+        assert!((a - flat).abs() / flat < 2e-3, "offset {k}/16: area wanted {flat}, got {a}");
+        let hits = mesh_checks::self_intersections(&s, 1e-9);
+        assert!(hits.is_empty(), "offset {k}/16: wanted no self-intersection, got {hits:?}");
+        // Every seam vertex on the seam: the seam polygon is as long as the outline.
+        let seam: f64 = (0..n).map(|m| mesh_checks::norm(mesh_checks::sub(s.vertices[s.seam[(m + 1) % n]], s.vertices[s.seam[m]]))).sum();
+        assert!((seam - p).abs() / p < 1e-3, "offset {k}/16: seam length wanted {p}, got {seam}");
+        // The rectangle is symmetric under a half turn, so the gluing half a perimeter further
+        // on is the same D-form (Alexandrov's uniqueness): the same volume.
+        let w = run(&r, &r, (k as f64 / 16.0 + 0.5) * p, 256);
+        assert!(w.stats.converged, "offset {k}/16 + 1/2: wanted converged, got {:?}", w.stats);
+        let (vw, _) = volume_area(&w);
+        assert!((vw - v).abs() / v < 1e-3, "offset {k}/16: volume {v} but {vw} half a perimeter on");
+        // Resolution independence (requirement 3): 128 seam vertices give the same volume.
+        let c = run(&r, &r, k as f64 / 16.0 * p, 128);
+        assert!(c.stats.converged, "offset {k}/16 at 128: wanted converged, got {:?}", c.stats);
+        let (vc, _) = volume_area(&c);
+        assert!((vc - v).abs() / v < 1e-2, "offset {k}/16: volume {v} at 256 but {vc} at 128");
+    }
+}

@@ -207,3 +207,48 @@ test('stats.shortfall names the promise an unconverged answer misses; maxBend is
   assert.equal(ok.stats.shortfall, null);
   assert.deepEqual(ok.creases, []);
 });
+
+// Issue 14: two congruent rectangles with 1 mm rounded corners at 1/16 of the perimeter. Their
+// D-form's creases cross the seam where both pieces are straight, so the answer has more seam
+// vertices than the resolution; checked from the mesh and `flat` alone.
+const roundedRect = (w, h, r) => {
+  const pts = [];
+  for (const [cx, cy, q] of [[w - r, r, 0], [w - r, h - r, 1], [r, h - r, 2], [r, r, 3]]) {
+    const [a0, a1] = [(q - 1) * Math.PI / 2, q * Math.PI / 2];
+    const p0 = [cx + r * Math.cos(a0), cy + r * Math.sin(a0)], p1 = [cx + r * Math.cos(a1), cy + r * Math.sin(a1)];
+    pts.push({ anchor: p0, left: p0, right: [p0[0] - Math.sin(a0) * K * r, p0[1] + Math.cos(a0) * K * r] });
+    pts.push({ anchor: p1, left: [p1[0] + Math.sin(a1) * K * r, p1[1] - Math.cos(a1) * K * r], right: p1 });
+  }
+  return { closed: true, points: pts };
+};
+
+test('test_issue_14 congruent rounded rectangles: creases across the seam get seam vertices', () => {
+  const rr = roundedRect(200, 40, 1);
+  const p = m.measure(rr).perimeter;
+  const r = m.simulate([rr, rr], { offset: p / 16, resolution: 256 });
+  assert.ok(r.stats.converged, `converged: ${JSON.stringify(r.stats)}`);
+  assert.ok(r.seam.length > 256, `wanted seam vertices added where creases cross the seam, got ${r.seam.length}`);
+  // Isometric from `flat` (within the 1 mm corners' seam sampling floor, ~7e-4, and twice that on
+  // chords that flips put in), closed, of the pieces' area, the seam as long as the outline.
+  let worst = 0;
+  r.triangles.forEach((t, f) => {
+    for (let q = 0; q < 3; q++) {
+      const [a, b] = [r.flat[f][q], r.flat[f][(q + 1) % 3]];
+      const d = Math.hypot(a[0] - b[0], a[1] - b[1]);
+      worst = Math.max(worst, Math.abs(Math.hypot(...sub(r.vertices[t[q]], r.vertices[t[(q + 1) % 3]])) / d - 1));
+    }
+  });
+  assert.ok(worst < 2.5e-3, `every edge within 2.5e-3 of its flat length, got ${worst}`);
+  const edges = new Set();
+  for (const t of r.triangles) for (let q = 0; q < 3; q++) edges.add(`${t[q]},${t[(q + 1) % 3]}`);
+  for (const key of edges) {
+    const [a, b] = key.split(',');
+    assert.ok(edges.has(`${b},${a}`), `edge ${a}->${b} has no opposite: mesh not closed`);
+  }
+  const { a } = volumeArea(r);
+  const flat = 2 * m.measure(rr).area;
+  assert.ok(Math.abs(a - flat) / flat < 2e-3, `area: wanted ${flat}, got ${a}`);
+  let seam = 0;
+  for (let k = 0; k < r.seam.length; k++) seam += Math.hypot(...sub(r.vertices[r.seam[(k + 1) % r.seam.length]], r.vertices[r.seam[k]]));
+  assert.ok(Math.abs(seam - p) / p < 1e-3, `seam length: wanted ${p}, got ${seam}`);
+});

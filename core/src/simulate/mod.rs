@@ -47,13 +47,20 @@
 //! (with the cold damping only if that fails: the flat doubly covered sheet is a singular point);
 //! a warm start climbs the same ladder from a quarter of the resolution.
 //!
-//! *Why not the alternatives.* Bobenko–Izmestiev (geometry-central's `embedConvex`) is exact and
-//! fast but needs strictly positive curvature and fails on the flat doubly covered case (two
-//! congruent pieces at zero offset) and on flat interior vertices; mass–spring / position-based
-//! dynamics meshes with interior vertices converge slowly (≈1 % strain) and smear the seam
-//! curvature into the interior. The seam-vertex polyhedron has no interior vertices at all, so
-//! the flat parts are exactly flat by construction, and the doubly covered flat case is just the
-//! planar solution of the same equations.
+//! *Creases across the seam.* A chord triangulation keeps every edge inside one piece, but where
+//! both pieces are straight the seam is flat and a crease of the polyhedron can run straight
+//! across it (two congruent rectangles with rounded corners glued at an offset). No chord mesh on
+//! the samples holds such a crease, so when the quick ladder finds no convex branch the convex
+//! path turns to an *intrinsic* triangulation of the glued metric, whose edges may cross the
+//! seam, and embeds it by Bobenko & Izmestiev's variational method (2008; as geometry-central's
+//! `embedConvex`), which is proved to reach the polyhedron for a convex metric; the triangles
+//! are then cut along the seam, with a seam vertex where a crease crosses it
+//! ([`convex::crossing`]). It is not the first path: it cannot give the flat doubly covered form
+//! (congruent pieces at zero offset, no interior point for its apex), and at 256 seam vertices its
+//! dense Newton steps take ~0.1–0.5 s where the chord ladder takes ~10 ms. Mass–spring /
+//! position-based dynamics meshes with interior vertices converge slowly (≈1 % strain) and smear
+//! the seam curvature into the interior; the seam-vertex polyhedron has no interior vertices at
+//! all, so the flat parts are exactly flat by construction.
 //!
 //! *Seam edges.* A seam edge has two flat lengths, A's chord and B's chord (they differ by
 //! `O(h³ (κ_A² − κ_B²))` for step `h`); both are residuals, so the solver takes the least-squares
@@ -75,7 +82,8 @@
 //!   triangulations), its volume and orientation; [`isometry`]: the length equations and one
 //!   Levenberg–Marquardt step ([`normal`]: its sparse LDLᵀ);
 //! - [`solve`]: which path solves a gluing; [`convex`]: the Alexandrov path (LM with flips
-//!   towards convexity, the multistart ladder, hull restarts, polygon pairs on their cone points);
+//!   towards convexity, the multistart ladder, hull restarts, polygon pairs on their cone points,
+//!   and the intrinsic triangulation for creases across the seam);
 //!   [`sheet`]: the elastic-sheet path of non-convex pairs (meshes with interior vertices, the
 //!   shell energy, the homotopy from convex twins);
 //! - [`frame`]: each piece moved to its first anchor and snapped, so that where a pair is

@@ -5,9 +5,16 @@
 //! - [`relax`]: LM on a fixed triangulation, flips between solves;
 //! - [`starts`]: the multistart's starting shapes;
 //! - [`hull`]: triangulations read off a convex hull, to restart a failed start;
-//! - [`polyhedral`]: polygon pairs solved on their cone points.
+//! - [`polyhedral`]: polygon pairs solved on their cone points;
+//! - [`crossing`]: the fallback when a crease crosses the seam, on an intrinsic triangulation
+//!   ([`intrinsic`]) embedded by Bobenko & Izmestiev's method ([`alexandrov`]) and cut along the
+//!   seam ([`overlay`]).
 
+pub mod alexandrov;
+pub mod crossing;
 pub mod hull;
+pub mod intrinsic;
+pub mod overlay;
 pub mod polyhedral;
 pub mod relax;
 pub mod starts;
@@ -322,6 +329,13 @@ pub(crate) fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(Seam
     }
     if best.is_none() {
         best = ladder(&samples, &levels, quick, &mut steps)?;
+    }
+    // No good branch with the quick budgets: before grinding the chord meshes for the rest of
+    // the steps, the intrinsic path ([`crossing`]), which also reaches creases across the seam.
+    if !best.as_ref().is_some_and(|b| b.3) && steps.0 < cap {
+        if let Some((pieces, x, tri)) = crossing::solve(&samples[samples.len() - 1], &mut steps) {
+            return Ok((pieces, Solution { x, tri, iterations: steps.0, flips: steps.1, converged: true }));
+        }
     }
     if !best.as_ref().is_some_and(|b| b.3) && steps.0 < cap {
         let patient = ladder(&samples, &levels, Patience { cap, ..PATIENT }, &mut steps)?;

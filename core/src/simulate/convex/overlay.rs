@@ -1,0 +1,246 @@
+//! An intrinsic triangulation ([`super::intrinsic::Mesh`]) cut along the seam into a mesh of
+//! the two flat pieces: the common subdivision of the triangulation and the seam (Sharp,
+//! Soliman & Crane 2019, §5) for the one curve that matters here.
+//!
+//! Where a seam edge's path crosses a mesh edge, the crossing becomes a seam vertex (its flat
+//! position is on the seam edge of each piece, at its share of the path's length; its 3D
+//! position on the mesh edge). Each triangle is cut along the path segments inside it into
+//! convex polygons, each lying in one piece (A to the left of a seam path, which runs as A's
+//! outline does), and the polygons are triangulated in that piece's flat coordinates. The
+//! result is a chord mesh like any other, on more seam vertices than the samples: every one of
+//! its triangles is isometric to its flat triangle, and every vertex is a seam point.
+
+use super::super::metric::{self, orient, Triangulation};
+use super::super::seam::{FlatPiece, SeamPieces};
+use super::super::vec3::{norm, sub, V3};
+use super::intrinsic::Mesh;
+
+fn lerp3(a: V3, b: V3, t: f64) -> V3 {
+    [0, 1, 2].map(|c| a[c] + t * (b[c] - a[c]))
+}
+
+fn lerp2(a: [f64; 2], b: [f64; 2], t: f64) -> [f64; 2] {
+    [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
+}
+
+/// A convex polygon (counter-clockwise in `pts`, possibly with several vertices on a line)
+/// cut into triangles of positive area: each cut takes off a strictly convex vertex, one next to
+/// a straight vertex first, so that a run of collinear vertices never ends up alone.
+fn triangulate_convex(poly: &[usize], pts: &[[f64; 2]], eps: f64) -> Option<Vec<[usize; 3]>> {
+    let mut v = poly.to_vec();
+    let mut out = Vec::with_capacity(v.len().saturating_sub(2));
+    while v.len() > 3 {
+        let k = v.len();
+        let turn = |m: usize| orient(pts[v[(m + k - 1) % k]], pts[v[m]], pts[v[(m + 1) % k]]);
+        let straight = |m: usize| turn(m).abs() <= eps;
+        let m = (0..k)
+            .find(|&m| turn(m) > eps && (straight((m + 1) % k) || straight((m + k - 1) % k)))
+            .or_else(|| (0..k).find(|&m| turn(m) > eps))?;
+        out.push([v[(m + k - 1) % k], v[m], v[(m + 1) % k]]);
+        v.remove(m);
+    }
+    if v.len() == 3 {
+        if orient(pts[v[0]], pts[v[1]], pts[v[2]]) <= eps {
+            return None;
+        }
+        out.push([v[0], v[1], v[2]]);
+    }
+    Some(out)
+}
+
+/// A polygon of a cut triangle: its vertices (new indices, counter-clockwise seen from
+/// outside) and the piece it lies in, once known.
+struct Part {
+    cycle: Vec<usize>,
+    piece: Option<usize>,
+}
+
+/// A point of a seam path as [`cut`] walks it: the mesh vertex it is (`Some(v)`) or the mesh edge
+/// it crosses (`Some((u, v))`), and its index among the new seam points.
+type PathStop = (Option<usize>, Option<(usize, usize)>, usize);
+
+/// Whether `a` → `b` is an edge of `cycle` in that direction.
+fn has_edge(cycle: &[usize], a: usize, b: usize) -> bool {
+    let k = cycle.len();
+    (0..k).any(|m| cycle[m] == a && cycle[(m + 1) % k] == b)
+}
+
+/// `mesh` with positions `x` (of the seam samples of `pieces`) cut along the seam (see the
+/// module docs): the pieces on the old and new seam points, the positions and each piece's
+/// triangulation. `None` when the paths and the triangles do not fit together (a path point
+/// outside the triangle it should be in, a polygon that does not triangulate).
+pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPieces, Vec<V3>, [Triangulation; 2])> {
+    let n = mesh.n;
+    // The seam points in order: each sample, then its path's crossings.
+    let mut pts: [Vec<[f64; 2]>; 2] = [Vec::new(), Vec::new()];
+    let mut xs: Vec<V3> = Vec::new();
+    let mut sample = vec![0usize; n];
+    // (mesh edge key, fraction from its smaller vertex, new index), and each path's new indices.
+    let mut on_edge: Vec<(u64, f64, usize)> = Vec::new();
+    let mut crossing_index: Vec<Vec<usize>> = vec![Vec::new(); n];
+    for s in 0..n {
+        let s1 = (s + 1) % n;
+        sample[s] = xs.len();
+        for (q, f) in pts.iter_mut().zip(&pieces.flat) {
+            q.push(f.pts[s]);
+        }
+        xs.push(x[s]);
+        let path = &mesh.paths[s];
+        let at: Vec<V3> = path.iter().map(|c| lerp3(x[c.u], x[c.v], c.f)).collect();
+        let mut run = Vec::with_capacity(at.len());
+        let mut acc = 0.0;
+        let mut last = x[s];
+        for &q in &at {
+            acc += norm(sub(q, last));
+            run.push(acc);
+            last = q;
+        }
+        let total = acc + norm(sub(x[s1], last));
+        for (m, c) in path.iter().enumerate() {
+            let tau = if total > 0.0 { run[m] / total } else { 0.5 };
+            for (q, f) in pts.iter_mut().zip(&pieces.flat) {
+                q.push(lerp2(f.pts[s], f.pts[s1], tau));
+            }
+            let idx = xs.len();
+            xs.push(at[m]);
+            let f = if c.u < c.v { c.f } else { 1.0 - c.f };
+            on_edge.push((crate::order::pair_key(c.u.min(c.v), c.u.max(c.v)), f, idx));
+            crossing_index[s].push(idx);
+        }
+    }
+    let nm = xs.len();
+    let new = |v: usize| sample[v];
+    // Each triangle's boundary, with the crossings on its edges in order.
+    let crossings_on = |a: usize, b: usize| -> Vec<usize> {
+        let key = crate::order::pair_key(a.min(b), a.max(b));
+        let mut c: Vec<(f64, usize)> = on_edge.iter().filter(|e| e.0 == key).map(|e| (if a < b { e.1 } else { 1.0 - e.1 }, e.2)).collect();
+        c.sort_by(|p, q| p.0.total_cmp(&q.0));
+        c.into_iter().map(|e| e.1).collect()
+    };
+    let mut parts: Vec<Vec<Part>> = mesh
+        .tris
+        .iter()
+        .map(|t| {
+            let mut cycle = Vec::new();
+            for a in 0..3 {
+                cycle.push(new(t[a]));
+                cycle.extend(crossings_on(t[a], t[(a + 1) % 3]));
+            }
+            vec![Part { cycle, piece: None }]
+        })
+        .collect();
+    // The path segments, each cut into the triangle that holds both its ends: A lies to its left.
+    for (s, (path, indices)) in mesh.paths.iter().zip(&crossing_index).enumerate() {
+        if path.is_empty() {
+            continue;
+        }
+        let s1 = (s + 1) % n;
+        let mut points: Vec<PathStop> = vec![(Some(s), None, new(s))];
+        for (c, &idx) in path.iter().zip(indices) {
+            points.push((None, Some((c.u, c.v)), idx));
+        }
+        points.push((Some(s1), None, new(s1)));
+        for w in points.windows(2) {
+            let (p, q) = (w[0], w[1]);
+            let ti = triangle_of(mesh, p.0, p.1, q.0, q.1)?;
+            let list = &mut parts[ti];
+            let pi = list.iter().position(|part| part.cycle.contains(&p.2) && part.cycle.contains(&q.2))?;
+            let part = list.swap_remove(pi);
+            let k = part.cycle.len();
+            let (a, b) = (part.cycle.iter().position(|&v| v == p.2)?, part.cycle.iter().position(|&v| v == q.2)?);
+            if (a + 1) % k == b || (b + 1) % k == a {
+                return None;
+            }
+            // From P round to Q (closed by Q → P: right of the path, B), and from Q round to P
+            // (closed by P → Q: left of the path, A).
+            let walk = |from: usize, to: usize| {
+                let mut c = vec![part.cycle[from]];
+                let mut m = from;
+                while m != to {
+                    m = (m + 1) % k;
+                    c.push(part.cycle[m]);
+                }
+                c
+            };
+            list.push(Part { cycle: walk(a, b), piece: Some(1) });
+            list.push(Part { cycle: walk(b, a), piece: Some(0) });
+        }
+    }
+    // Whole triangles: the piece of a seam edge they hold, else that of a neighbour across an
+    // edge inside a piece.
+    for (ti, t) in mesh.tris.iter().enumerate() {
+        for a in 0..3 {
+            let (u, v) = (t[a], t[(a + 1) % 3]);
+            if parts[ti].len() == 1 && parts[ti][0].piece.is_none() && mesh.seam_is_edge(u, v) {
+                parts[ti][0].piece = Some(if (u + 1) % n == v { 0 } else { 1 });
+            }
+        }
+    }
+    loop {
+        let mut changed = false;
+        let mut open = false;
+        for ti in 0..mesh.tris.len() {
+            if parts[ti].len() != 1 || parts[ti][0].piece.is_some() {
+                continue;
+            }
+            open = true;
+            let t = mesh.tris[ti];
+            for a in 0..3 {
+                let (u, v) = (t[a], t[(a + 1) % 3]);
+                if mesh.seam_is_edge(u, v) {
+                    continue;
+                }
+                let Some(tj) = mesh.triangle(v, u) else { continue };
+                let (nu, nv) = (new(u), new(v));
+                if let Some(p) = parts[tj].iter().find(|part| has_edge(&part.cycle, nv, nu)).and_then(|part| part.piece) {
+                    parts[ti][0].piece = Some(p);
+                    changed = true;
+                    break;
+                }
+            }
+        }
+        if !open {
+            break;
+        }
+        if !changed {
+            return None;
+        }
+    }
+    // The new pieces and their triangulations.
+    let mut flat: Vec<FlatPiece> = Vec::with_capacity(2);
+    let mut tri: Vec<Triangulation> = Vec::with_capacity(2);
+    for (p, q) in pts.iter().enumerate() {
+        let eps = 1e-12 * metric::size2(q);
+        let mut tris = Vec::with_capacity(nm - 2);
+        for part in parts.iter().flatten().filter(|part| part.piece == Some(p)) {
+            // B's flat piece is mirrored: its counter-clockwise order is the reverse of outward.
+            let cycle: Vec<usize> = if p == 0 { part.cycle.clone() } else { part.cycle.iter().rev().copied().collect() };
+            tris.extend(triangulate_convex(&cycle, q, eps)?);
+        }
+        let area: f64 = tris.iter().map(|&[a, b, c]| orient(q[a], q[b], q[c])).sum();
+        let polygon: f64 = (0..nm).map(|m| orient([0.0, 0.0], q[m], q[(m + 1) % nm])).sum();
+        if tris.len() != nm - 2 || (area - polygon).abs() > 1e-9 * polygon.abs() {
+            return None;
+        }
+        let arc_mid = (0..nm).map(|m| lerp2(q[m], q[(m + 1) % nm], 0.5)).collect();
+        flat.push(FlatPiece { pts: q.clone(), arc_mid, area: pieces.flat[p].area, perimeter: pieces.flat[p].perimeter });
+        tri.push(Triangulation::from_tris(nm, tris));
+    }
+    let (b, a) = (flat.pop()?, flat.pop()?);
+    let (tb, ta) = (tri.pop()?, tri.pop()?);
+    Some((SeamPieces { n: nm, flat: [a, b] }, xs, [ta, tb]))
+}
+
+/// The triangle of `mesh` that holds two consecutive points of a seam path, each a vertex
+/// (`Some(v)`) or a crossing of an edge (`Some((u, v))`).
+fn triangle_of(mesh: &Mesh, pv: Option<usize>, pe: Option<(usize, usize)>, qv: Option<usize>, qe: Option<(usize, usize)>) -> Option<usize> {
+    let holds = |ti: usize, v: Option<usize>, e: Option<(usize, usize)>| {
+        let t = mesh.tris[ti];
+        v.is_none_or(|v| t.contains(&v)) && e.is_none_or(|(a, b)| t.contains(&a) && t.contains(&b))
+    };
+    let edge = pe.or(qe)?;
+    [mesh.triangle(edge.0, edge.1), mesh.triangle(edge.1, edge.0)]
+        .into_iter()
+        .flatten()
+        .find(|&ti| holds(ti, pv, pe) && holds(ti, qv, qe))
+}
