@@ -155,6 +155,40 @@ for (const [name, a] of nonConvex) {
   console.log(`  sampling floor: no mesh on these seam samples gets below max edge strain ${floor.toExponential(2)} (≤ 1e-3 needed) ${mark(floor <= 1e-3)}${floor > 1e-3 ? ' — the samples, not the solver, rule out a converged answer' : ''}`);
 }
 
+// Issue 14, convex pairs whose creases cross the seam: two congruent rectangles with 1 mm
+// rounded corners (the classic D-form of two equal pieces). The chord meshes cannot hold a crease
+// across the seam, so these take the intrinsic path (convex/crossing.rs) after the quick chord
+// ladder gives up; printed against the 1 s a slider step may take, beside the seam vertices the
+// crossings added.
+const roundedRect = (w, h, r) => {
+  const c = [[w - r, r, 0], [w - r, h - r, 1], [r, h - r, 2], [r, r, 3]];
+  const pts = [];
+  for (const [cx, cy, q] of c) {
+    const a0 = (q - 1) * Math.PI / 2, a1 = q * Math.PI / 2;
+    const p0 = [cx + r * Math.cos(a0), cy + r * Math.sin(a0)], p1 = [cx + r * Math.cos(a1), cy + r * Math.sin(a1)];
+    const t0 = [-Math.sin(a0) * K * r, Math.cos(a0) * K * r], t1 = [-Math.sin(a1) * K * r, Math.cos(a1) * K * r];
+    pts.push({ anchor: p0, left: p0, right: [p0[0] + t0[0], p0[1] + t0[1]] });
+    pts.push({ anchor: p1, left: [p1[0] - t1[0], p1[1] - t1[1]], right: p1 });
+  }
+  return { closed: true, points: pts };
+};
+const rr = roundedRect(200, 40, 1);
+const rrP = m.measure(rr).perimeter;
+for (const k of [1, 3, 7]) {
+  const o = { offset: (k / 16) * rrP, resolution: 256 };
+  const times = [];
+  let r;
+  for (let i = 0; i < 3; i++) {
+    const t0 = performance.now();
+    r = m.simulate([rr, rr], o);
+    times.push(performance.now() - t0);
+  }
+  times.sort((x, y) => x - y);
+  const s = r.stats;
+  console.log(`== two 200 × 40 mm rectangles with 1 mm corners, offset ${k}/16 (WASM, convex, creases across the seam) ==`);
+  console.log(`  time ${times[1].toFixed(1)} ms median of 3 (≤ 1000 ms) ${mark(times[1] <= 1000)}   converged ${s.converged} ${mark(s.converged)}   seam vertices ${r.seam.length} (256 sampled)   max strain ${s.maxStrain.toExponential(2)} (sampling floor ${samplingFloor(r).toExponential(2)})   iterations ${s.iterations}`);
+}
+
 // Sensitivity (issue 14, requirement 3 presumes it is small): the same pair moved on the
 // artboard, and one knot of the first piece moved by 0.01 mm (four knots in turn). A moved
 // pair is the same drawing, so its form should not change at all; a 0.01 mm nudge changes the
