@@ -174,7 +174,7 @@ const roundedRect = (w, h, r) => {
 };
 const rr = roundedRect(200, 40, 1);
 const rrP = m.measure(rr).perimeter;
-for (const k of [1, 3, 7]) {
+for (const k of [4, 5, 12]) {
   const o = { offset: (k / 16) * rrP, resolution: 256 };
   const times = [];
   let r;

@@ -37,7 +37,8 @@ fn sin_of(c: f64) -> f64 {
 }
 
 /// What the radii give on one triangle i, j, k (corners in this order): per corner the base
-/// angle γ, the dihedral angle β at its radial edge, and per edge (i→j, j→k, k→i) the dihedral
+/// angle γ (only when asked for: it does not depend on the radii, and acos was a quarter of the
+/// time), the dihedral angle β at its radial edge, and per edge (i→j, j→k, k→i) the dihedral
 /// angle α at that base edge on this triangle's side.
 struct Tet {
     /// Whether the tetrahedron exists: every spherical triangle at a corner is proper.
@@ -47,7 +48,7 @@ struct Tet {
     alpha: [f64; 3],
 }
 
-fn tet(l: [f64; 3], r: [f64; 3]) -> Tet {
+fn tet(l: [f64; 3], r: [f64; 3], with_gamma: bool) -> Tet {
     // l[a] is the length of edge a → a+1; r[a] the radius at corner a.
     let mut gamma = [0.0; 3];
     let mut beta = [0.0; 3];
@@ -61,7 +62,9 @@ fn tet(l: [f64; 3], r: [f64; 3]) -> Tet {
         let crb = cos_opposite(r[b], l[a], r[a]);
         let crc = cos_opposite(r[c], l[c], r[a]);
         let (sg, srb, src) = (sin_of(cg), sin_of(crb), sin_of(crc));
-        gamma[a] = cg.acos();
+        if with_gamma {
+            gamma[a] = cg.acos();
+        }
         let cb = (cg - crb * crc) / (srb * src);
         // The dihedral angle at edge a → b, seen at a (the spherical triangle of the three edges).
         let ca = (crc - crb * cg) / (srb * sg);
@@ -73,9 +76,10 @@ fn tet(l: [f64; 3], r: [f64; 3]) -> Tet {
 }
 
 /// The state of the generalized polyhedron for radii `r` on `mesh`.
+#[derive(Clone)]
 struct State {
     kappa: Vec<f64>,
-    /// The metric's curvature `2π − Σ γ` per vertex.
+    /// The metric's curvature `2π − Σ γ` per vertex (when asked for, else 2π).
     delta: Vec<f64>,
     /// Per triangle, per edge a → a+1: α.
     alpha: Vec<[f64; 3]>,
@@ -88,13 +92,18 @@ fn lengths(mesh: &Mesh, t: [usize; 3]) -> Option<[f64; 3]> {
 }
 
 fn state(mesh: &Mesh, r: &[f64]) -> Option<State> {
+    state_with(mesh, r, false)
+}
+
+/// [`state`], with the metric's curvature δ when `with_delta`.
+fn state_with(mesh: &Mesh, r: &[f64], with_delta: bool) -> Option<State> {
     let n = mesh.n;
     let mut kappa = vec![TAU; n];
     let mut delta = vec![TAU; n];
     let mut alpha = Vec::with_capacity(mesh.tris.len());
     let mut theta = vec![0.0; mesh.edges().len()];
     for &t in &mesh.tris {
-        let g = tet(lengths(mesh, t)?, t.map(|v| r[v]));
+        let g = tet(lengths(mesh, t)?, t.map(|v| r[v]), with_delta);
         if !g.real {
             return None;
         }
@@ -201,8 +210,8 @@ fn solve_dense(mesh: &Mesh, diag: &[f64], off: &[f64], u: &[f64]) -> Option<Vec<
 /// shortened until every tetrahedron stays real. Whether `|κ − target|` fell below `tol`.
 fn newton(mesh: &mut Mesh, r: &mut [f64], target: &[f64], tol: f64, iterations: &mut usize) -> bool {
     let size = r.iter().fold(0.0f64, |m, v| m.max(*v));
+    let Some(mut s) = state(mesh, r) else { return false };
     for _ in 0..NEWTON_STEPS {
-        let Some(s) = state(mesh, r) else { return false };
         let u: Vec<f64> = s.kappa.iter().zip(target).map(|(k, t)| k - t).collect();
         if u.iter().fold(0.0f64, |m, v| m.max(v.abs())) < tol {
             return true;
@@ -216,11 +225,12 @@ fn newton(mesh: &mut Mesh, r: &mut [f64], target: &[f64], tol: f64, iterations: 
             for k in 0..r.len() {
                 r[k] = r0[k] - tau * v[k];
             }
-            let fits = slack(mesh, r) > 1e-9 * size
-                && state(mesh, r).is_some_and(|s| s.theta.iter().all(|&t| t <= PI + STEP_THETA));
-            if fits {
-                // Keep the triangulation weighted Delaunay as the radii move.
-                flip_to_convex(mesh, r, FLIP_EPS);
+            let fits = if slack(mesh, r) > 1e-9 * size { state(mesh, r).filter(|s| s.theta.iter().all(|&t| t <= PI + STEP_THETA)) } else { None };
+            if let Some(st) = fits {
+                // Keep the triangulation weighted Delaunay as the radii move; the state is
+                // computed again only when something flipped.
+                let Some(next) = (if flip_to_convex(mesh, r, FLIP_EPS, Some(st.clone())) > 0 { state(mesh, r) } else { Some(st) }) else { return false };
+                s = next;
                 break;
             }
             tau *= 0.5;
@@ -237,12 +247,13 @@ fn newton(mesh: &mut Mesh, r: &mut [f64], target: &[f64], tol: f64, iterations: 
 pub(crate) const NEWTON_STEPS: usize = 20;
 
 /// Flips every edge whose dihedral angle sum exceeds π by more than `eps` (the generalized
-/// polyhedron folds inward there) until none does or none can be flipped. The number of flips.
-fn flip_to_convex(mesh: &mut Mesh, r: &[f64], eps: f64) -> usize {
+/// polyhedron folds inward there) until none does or none can be flipped; `known` is the state
+/// at `r` when the caller has it. The number of flips.
+fn flip_to_convex(mesh: &mut Mesh, r: &[f64], eps: f64, known: Option<State>) -> usize {
     // The tetrahedron on the triangle holding u → v, and the corner of u in it.
     let tet_at = |mesh: &Mesh, u: usize, v: usize| -> Option<(Tet, usize)> {
         let t = mesh.tris[mesh.triangle(u, v)?];
-        Some((tet(lengths(mesh, t)?, t.map(|w| r[w])), (0..3).find(|&a| t[a] == u)?))
+        Some((tet(lengths(mesh, t)?, t.map(|w| r[w]), false), (0..3).find(|&a| t[a] == u)?))
     };
     let theta_at = |mesh: &Mesh, i: usize, j: usize| -> Option<f64> {
         let (a, ca) = tet_at(mesh, i, j)?;
@@ -250,9 +261,10 @@ fn flip_to_convex(mesh: &mut Mesh, r: &[f64], eps: f64) -> usize {
         Some(a.alpha[ca] + b.alpha[cb])
     };
     let mut flips = 0;
+    let mut known = known;
     for _ in 0..mesh.n {
         let mut any = false;
-        let Some(s) = state(mesh, r) else { return flips };
+        let Some(s) = known.take().or_else(|| state(mesh, r)) else { return flips };
         let candidates: Vec<(usize, usize)> = mesh.edges().into_iter().zip(&s.theta).filter(|e| *e.1 > PI + eps).map(|e| e.0).collect();
         for (i, j) in candidates {
             // Earlier flips of this pass may have changed it: measured again.
@@ -263,7 +275,7 @@ fn flip_to_convex(mesh: &mut Mesh, r: &[f64], eps: f64) -> usize {
             // Only a flip whose two new tetrahedra exist (k, i, l and l, j, k).
             let real = |a: usize, b: usize, c: usize| -> bool {
                 let (Some(ab), Some(bc)) = (mesh.length(a, b), mesh.length(b, c)) else { return false };
-                tet([ab, bc, d], [a, b, c].map(|w| r[w])).real
+                tet([ab, bc, d], [a, b, c].map(|w| r[w]), false).real
             };
             if real(k, i, l) && real(l, j, k) && mesh.flip(i, j) {
                 flips += 1;
@@ -387,8 +399,8 @@ pub(crate) fn embed(mesh: &mut Mesh, max_newton: usize, iterations: &mut usize) 
     let mut ok = false;
     for _ in 0..80 {
         r.iter_mut().for_each(|v| *v = big);
-        flip_to_convex(mesh, &r, FLIP_EPS);
-        if let Some(s) = state(mesh, &r) {
+        flip_to_convex(mesh, &r, FLIP_EPS, None);
+        if let Some(s) = state_with(mesh, &r, true) {
             let convex = s.theta.iter().all(|&t| t <= PI + 1e-3);
             if convex && (0..n).all(|i| s.kappa[i] >= -KAPPA_SLACK && s.delta[i] >= s.kappa[i] - KAPPA_SLACK) {
                 ok = true;
@@ -412,9 +424,12 @@ pub(crate) fn embed(mesh: &mut Mesh, max_newton: usize, iterations: &mut usize) 
         let tol = if tau >= 1.0 { 0.9 * KAPPA_TOL } else { (0.25 * tau * kmax).min(1e-4) };
         // A failed Newton solve leaves the radii and the triangulation as they were.
         let m0 = mesh.clone();
+        let before = *iterations;
         if newton(mesh, &mut r, &target, tol, iterations) {
-            flip_to_convex(mesh, &r, FLIP_EPS);
-            tau = (2.0 * tau).min(1.0);
+            flip_to_convex(mesh, &r, FLIP_EPS, None);
+            if *iterations - before <= EASY_NEWTON {
+                tau = (2.0 * tau).min(1.0);
+            }
         } else {
             *mesh = m0;
             r = r0;
@@ -444,3 +459,8 @@ pub(crate) const STEP_THETA: f64 = 0.05;
 /// Round-off allowed in the cosines of a tetrahedron's angles before it counts as not real: the
 /// thin tetrahedra of the first, large radii put them within a few ulps of ±1.
 pub(crate) const REAL_TOL: f64 = 1e-9;
+
+/// Newton steps within which a solve counts as easy, so that the next target may be twice as far
+/// (see [`embed`]); a harder one keeps the step, which spares the failed attempts at the doubled
+/// one (each up to [`NEWTON_STEPS`]).
+pub(crate) const EASY_NEWTON: usize = 4;
