@@ -35,6 +35,12 @@ use super::intrinsic::Mesh;
 use super::relax::{relax_damped, relax_with, Flips, Orientation, WARM};
 use super::{exact_if_polyhedral, is_good, triangulate};
 
+/// Seam vertices up to which this path runs. Its Newton systems are dense (`O(n³)` a step,
+/// ~2 ms native at 256, the default resolution); at 512 a failed embedding would take ~10 s and
+/// at the largest resolution (4,096) hours and 130 MB, so finer gluings keep the chord path
+/// alone.
+pub(crate) const MAX_SEAM: usize = 256;
+
 /// Newton steps allowed to [`super::alexandrov::embed`]: the survey's answers take 60–250.
 pub(crate) const NEWTON: usize = 400;
 
@@ -50,16 +56,21 @@ pub(crate) const POLISHED_STRAIN: f64 = 1e-6;
 
 /// The D-form of the sample polygons `pieces` (both convex) by the steps of the module docs:
 /// the pieces with a seam vertex added where a crease crosses the seam, the positions and the
-/// triangulations, when the answer is isometric to the length equations ([`STRAIN_TOL`]) and
-/// good ([`is_good`], [`exact_if_polyhedral`], [`convex_as_a_whole`]); else `None`. The Newton
-/// and LM steps are added to `steps`.
-pub(crate) fn solve(pieces: &SeamPieces, steps: &mut (usize, usize)) -> Option<(SeamPieces, Vec<V3>, [Triangulation; 2])> {
+/// triangulations, when the answer is isometric to the length equations ([`POLISHED_STRAIN`]) and
+/// good ([`is_good`], [`exact_if_polyhedral`], [`convex_as_a_whole`]); else `None`, also
+/// beyond [`MAX_SEAM`] seam vertices. The Newton and LM steps are added to `steps`, and stop at
+/// `cap` in all (the user's `max_iterations`).
+pub(crate) fn solve(pieces: &SeamPieces, cap: usize, steps: &mut (usize, usize)) -> Option<(SeamPieces, Vec<V3>, [Triangulation; 2])> {
+    if pieces.n > MAX_SEAM {
+        return None;
+    }
+    let left = |steps: &(usize, usize)| cap.saturating_sub(steps.0);
     let mut mesh = Mesh::from_chords(pieces, &[triangulate(pieces, 0).ok()?, triangulate(pieces, 1).ok()?])?;
     let mut newton = 0;
-    let embedded = super::alexandrov::embed(&mut mesh, NEWTON, &mut newton);
+    let embedded = super::alexandrov::embed(&mut mesh, NEWTON.min(left(steps)), &mut newton);
     steps.0 += newton;
     let mut x = embedded?;
-    relax_with(&mut Frozen { n: mesh.n, bars: mesh.bars() }, &mut x, POLISH, STEP_TOL, Orientation::Kept, WARM).tally(steps);
+    relax_with(&mut Frozen { n: mesh.n, bars: mesh.bars() }, &mut x, POLISH.min(left(steps)), STEP_TOL, Orientation::Kept, WARM).tally(steps);
     mesh.flip_straight_angles();
     let (cut, mut xs, mut tri) = super::overlay::cut(&mesh, pieces, &x)?;
     // The intrinsic lengths of chords that flips put in come from layouts whose seam sides have
@@ -69,7 +80,7 @@ pub(crate) fn solve(pieces: &SeamPieces, steps: &mut (usize, usize)) -> Option<(
     // flat length), relaxed there from the embedding with the chord flips of [`super::relax`]
     // (which take out the folds of up to 5e-2 that this small change of metric leaves between
     // nearly coplanar triangles).
-    relax_damped(&cut, &mut xs, &mut tri, POLISH, STEP_TOL, Orientation::Kept, WARM).tally(steps);
+    relax_damped(&cut, &mut xs, &mut tri, POLISH.min(left(steps)), STEP_TOL, Orientation::Kept, WARM).tally(steps);
     let isometric = max_strain(&xs, &bars(&cut, &tri)) <= POLISHED_STRAIN;
     (isometric && is_good(&xs, &tri, true) && exact_if_polyhedral(&cut, &xs, &tri) && convex_as_a_whole(&xs, &tri)).then_some((cut, xs, tri))
 }

@@ -333,7 +333,7 @@ pub(crate) fn solve_cold(glue: &Glue, options: &SimulateOptions) -> Result<(Seam
     // No good branch with the quick budgets: before grinding the chord meshes for the rest of
     // the steps, the intrinsic path ([`crossing`]), which also reaches creases across the seam.
     if !best.as_ref().is_some_and(|b| b.3) && steps.0 < cap {
-        if let Some((pieces, x, tri)) = crossing::solve(&samples[samples.len() - 1], &mut steps) {
+        if let Some((pieces, x, tri)) = crossing::solve(&samples[samples.len() - 1], cap, &mut steps) {
             return Ok((pieces, Solution { x, tri, iterations: steps.0, flips: steps.1, converged: true }));
         }
     }
