@@ -48,6 +48,17 @@ pub struct FlatPiece {
     pub perimeter: f64,
 }
 
+impl FlatPiece {
+    /// A piece on the samples `pts` whose seam stretches between samples are straight (a polygon
+    /// pair's sides, or samples placed on a straight stretch): each `arc_mid` is the midpoint of
+    /// its chord. `area` and `perimeter` are the true outline's.
+    pub fn on_chords(pts: Vec<[f64; 2]>, area: f64, perimeter: f64) -> FlatPiece {
+        let q = pts.len();
+        let arc_mid = (0..q).map(|m| [0.5 * (pts[m][0] + pts[(m + 1) % q][0]), 0.5 * (pts[m][1] + pts[(m + 1) % q][1])]).collect();
+        FlatPiece { pts, arc_mid, area, perimeter }
+    }
+}
+
 /// Both pieces, with the same number of samples.
 #[derive(Debug, Clone)]
 pub struct SeamPieces {

@@ -21,16 +21,9 @@
 //! apply; through the normal equations `J² v = J u` it did, but the squared conditioning lost the
 //! final digits and two of the bench's rounded-rectangle gluings stopped converging.
 
-use super::intrinsic::Mesh;
-use super::super::metric::KeyMap;
-use crate::order::pair_key;
+use super::intrinsic::{cos_opposite, Mesh};
 use super::super::vec3::{cross, dot, norm, sub, V3};
 use std::f64::consts::{PI, TAU};
-
-/// The cosine of the angle opposite side `a` in a triangle with sides a, b, c.
-fn cos_opposite(a: f64, b: f64, c: f64) -> f64 {
-    ((b * b + c * c - a * a) / (2.0 * b * c)).clamp(-1.0, 1.0)
-}
 
 fn sin_of(c: f64) -> f64 {
     (1.0 - c * c).max(0.0).sqrt()
@@ -76,7 +69,6 @@ fn tet(l: [f64; 3], r: [f64; 3], with_gamma: bool) -> Tet {
 }
 
 /// The state of the generalized polyhedron for radii `r` on `mesh`.
-#[derive(Clone)]
 struct State {
     kappa: Vec<f64>,
     /// The metric's curvature `2π − Σ γ` per vertex (when asked for, else 2π).
@@ -85,10 +77,6 @@ struct State {
     alpha: Vec<[f64; 3]>,
     /// Per edge (in the order of [`Mesh::edges`]): θ, the sum of its two α.
     theta: Vec<f64>,
-}
-
-fn lengths(mesh: &Mesh, t: [usize; 3]) -> Option<[f64; 3]> {
-    Some([mesh.length(t[0], t[1])?, mesh.length(t[1], t[2])?, mesh.length(t[2], t[0])?])
 }
 
 fn state(mesh: &Mesh, r: &[f64]) -> Option<State> {
@@ -103,7 +91,7 @@ fn state_with(mesh: &Mesh, r: &[f64], with_delta: bool) -> Option<State> {
     let mut alpha = Vec::with_capacity(mesh.tris.len());
     let mut theta = vec![0.0; mesh.edges().len()];
     for &t in &mesh.tris {
-        let g = tet(lengths(mesh, t)?, t.map(|v| r[v]), with_delta);
+        let g = tet(mesh.triangle_lengths(t)?, t.map(|v| r[v]), with_delta);
         if !g.real {
             return None;
         }
@@ -121,8 +109,8 @@ fn state_with(mesh: &Mesh, r: &[f64], with_delta: bool) -> Option<State> {
 /// every tetrahedron side is a real triangle.
 fn slack(mesh: &Mesh, r: &[f64]) -> f64 {
     mesh.edges()
-        .into_iter()
-        .filter_map(|(i, j)| {
+        .iter()
+        .filter_map(|&(i, j)| {
             let l = mesh.length(i, j)?;
             Some((l + r[i] - r[j]).min(r[i] + r[j] - l).min(l + r[j] - r[i]))
         })
@@ -135,13 +123,8 @@ fn slack(mesh: &Mesh, r: &[f64]) -> f64 {
 /// the diagonal, and one entry per edge in the order of [`Mesh::edges`].
 fn jacobian(mesh: &Mesh, r: &[f64], s: &State) -> Option<(Vec<f64>, Vec<f64>)> {
     let n = mesh.n;
-    let edges = mesh.edges();
-    let mut index = KeyMap::default();
-    for (e, &(i, j)) in edges.iter().enumerate() {
-        index.insert(pair_key(i.min(j), i.max(j)), e);
-    }
     let mut diag = vec![0.0; n];
-    let mut off = vec![0.0; edges.len()];
+    let mut off = vec![0.0; mesh.edges().len()];
     for (ti, &t) in mesh.tris.iter().enumerate() {
         for a in 0..3 {
             let (i, j) = (t[a], t[(a + 1) % 3]);
@@ -152,7 +135,7 @@ fn jacobian(mesh: &Mesh, r: &[f64], s: &State) -> Option<(Vec<f64>, Vec<f64>)> {
             // This triangle's half of the edge's entry: cot α on its side.
             let v = 1.0 / s.alpha[ti][a].tan() / (l * sij * sji);
             let cphi = cos_opposite(l, ri, rj);
-            off[*index.get(&pair_key(i.min(j), i.max(j)))?] += v;
+            off[mesh.slot_of(i, j)?] += v;
             diag[i] -= cphi * v;
             diag[j] -= cphi * v;
         }
@@ -229,7 +212,7 @@ fn newton(mesh: &mut Mesh, r: &mut [f64], target: &[f64], tol: f64, iterations: 
             if let Some(st) = fits {
                 // Keep the triangulation weighted Delaunay as the radii move; the state is
                 // computed again only when something flipped.
-                let Some(next) = (if flip_to_convex(mesh, r, FLIP_EPS, Some(st.clone())) > 0 { state(mesh, r) } else { Some(st) }) else { return false };
+                let Some(next) = (if flip_to_convex(mesh, r, FLIP_EPS, Some(&st)) > 0 { state(mesh, r) } else { Some(st) }) else { return false };
                 s = next;
                 break;
             }
@@ -249,11 +232,11 @@ pub(crate) const NEWTON_STEPS: usize = 20;
 /// Flips every edge whose dihedral angle sum exceeds π by more than `eps` (the generalized
 /// polyhedron folds inward there) until none does or none can be flipped; `known` is the state
 /// at `r` when the caller has it. The number of flips.
-fn flip_to_convex(mesh: &mut Mesh, r: &[f64], eps: f64, known: Option<State>) -> usize {
+fn flip_to_convex(mesh: &mut Mesh, r: &[f64], eps: f64, known: Option<&State>) -> usize {
     // The tetrahedron on the triangle holding u → v, and the corner of u in it.
     let tet_at = |mesh: &Mesh, u: usize, v: usize| -> Option<(Tet, usize)> {
         let t = mesh.tris[mesh.triangle(u, v)?];
-        Some((tet(lengths(mesh, t)?, t.map(|w| r[w]), false), (0..3).find(|&a| t[a] == u)?))
+        Some((tet(mesh.triangle_lengths(t)?, t.map(|w| r[w]), false), (0..3).find(|&a| t[a] == u)?))
     };
     let theta_at = |mesh: &Mesh, i: usize, j: usize| -> Option<f64> {
         let (a, ca) = tet_at(mesh, i, j)?;
@@ -261,11 +244,20 @@ fn flip_to_convex(mesh: &mut Mesh, r: &[f64], eps: f64, known: Option<State>) ->
         Some(a.alpha[ca] + b.alpha[cb])
     };
     let mut flips = 0;
-    let mut known = known;
-    for _ in 0..mesh.n {
+    for pass in 0..mesh.n {
         let mut any = false;
-        let Some(s) = known.take().or_else(|| state(mesh, r)) else { return flips };
-        let candidates: Vec<(usize, usize)> = mesh.edges().into_iter().zip(&s.theta).filter(|e| *e.1 > PI + eps).map(|e| e.0).collect();
+        let fresh;
+        let s = match known.filter(|_| pass == 0) {
+            Some(s) => s,
+            None => match state(mesh, r) {
+                Some(s) => {
+                    fresh = s;
+                    &fresh
+                }
+                None => return flips,
+            },
+        };
+        let candidates: Vec<(usize, usize)> = mesh.edges().iter().zip(&s.theta).filter(|e| *e.1 > PI + eps).map(|e| *e.0).collect();
         for (i, j) in candidates {
             // Earlier flips of this pass may have changed it: measured again.
             if theta_at(mesh, i, j).is_none_or(|t| t <= PI + eps) {
@@ -295,7 +287,7 @@ pub(crate) fn flip_to_delaunay(mesh: &mut Mesh) -> usize {
     let mut flips = 0;
     for _ in 0..8 * mesh.n {
         let mut any = false;
-        for (i, j) in mesh.edges() {
+        for (i, j) in mesh.edges().to_vec() {
             let (Some(k), Some(l)) = (mesh.opposite(i, j), mesh.opposite(j, i)) else { continue };
             let (Some(lij), Some(lik), Some(ljk), Some(lil), Some(ljl)) = (mesh.length(i, j), mesh.length(i, k), mesh.length(j, k), mesh.length(i, l), mesh.length(j, l)) else { continue };
             let angle = cos_opposite(lij, lik, ljk).acos() + cos_opposite(lij, lil, ljl).acos();
@@ -336,7 +328,7 @@ fn fourth_point(a: V3, b: V3, c: V3, da: f64, db: f64, dc: f64, above: bool) -> 
 fn layout(mesh: &Mesh, r: &[f64]) -> Option<Vec<V3>> {
     let n = mesh.n;
     let t0 = *mesh.tris.first()?;
-    let l = lengths(mesh, t0)?;
+    let l = mesh.triangle_lengths(t0)?;
     let apex = [0.0; 3];
     // The first triangle in the plane z = 0, counter-clockwise seen from +z, the apex below.
     let c0 = cos_opposite(l[1], l[2], l[0]);
@@ -389,7 +381,7 @@ pub(crate) fn embed(mesh: &mut Mesh, max_newton: usize, iterations: &mut usize) 
     let n = mesh.n;
     let mut big = 0.0f64;
     for &t in &mesh.tris {
-        let l = lengths(mesh, t)?;
+        let l = mesh.triangle_lengths(t)?;
         let s = 0.5 * (l[0] + l[1] + l[2]);
         let area = (s * (s - l[0]) * (s - l[1]) * (s - l[2])).max(0.0).sqrt();
         big = big.max(l[0] * l[1] * l[2] / (4.0 * area.max(f64::MIN_POSITIVE)));
@@ -415,12 +407,12 @@ pub(crate) fn embed(mesh: &mut Mesh, max_newton: usize, iterations: &mut usize) 
     let mut tau = 1.0f64;
     while *iterations < max_newton {
         let s = state(mesh, &r)?;
-        if s.kappa.iter().fold(0.0f64, |m, v| m.max(v.abs())) <= KAPPA_TOL {
+        let kmax = s.kappa.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        if kmax <= KAPPA_TOL {
             return layout(mesh, &r);
         }
         let target: Vec<f64> = s.kappa.iter().map(|k| (1.0 - tau) * k).collect();
         let r0 = r.clone();
-        let kmax = s.kappa.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let tol = if tau >= 1.0 { 0.9 * KAPPA_TOL } else { (0.25 * tau * kmax).min(1e-4) };
         // A failed Newton solve leaves the radii and the triangulation as they were.
         let m0 = mesh.clone();

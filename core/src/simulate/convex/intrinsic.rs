@@ -92,7 +92,14 @@ fn apex(base: f64, a: f64, b: f64, side: f64) -> [f64; 2] {
     [x, side * (a * a - x * x).max(0.0).sqrt()]
 }
 
-fn lerp2(a: [f64; 2], b: [f64; 2], t: f64) -> [f64; 2] {
+/// The cosine of the angle opposite side `a` in a triangle with sides a, b, c (law of cosines),
+/// clamped to [−1, 1].
+pub(crate) fn cos_opposite(a: f64, b: f64, c: f64) -> f64 {
+    ((b * b + c * c - a * a) / (2.0 * b * c)).clamp(-1.0, 1.0)
+}
+
+/// The point a fraction `t` of the way from `a` to `b`.
+pub(crate) fn lerp2(a: [f64; 2], b: [f64; 2], t: f64) -> [f64; 2] {
     [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
 }
 
@@ -129,11 +136,9 @@ impl Mesh {
         delaunay(&mut ta, &pieces.flat[0].pts);
         let mut tb = tri[1].clone();
         delaunay(&mut tb, &pieces.flat[1].pts);
-        let tri = [ta, tb.clone()];
-        let pts = &pieces.flat[1].pts;
+        let (pts, a) = (&pieces.flat[1].pts, ta.chords());
         let s2 = metric::size2(pts);
         for _ in 0..8 {
-            let a: Vec<(usize, usize)> = tri[0].chords();
             let shared: Vec<(usize, usize)> = tb.chords().into_iter().filter(|e| a.contains(e)).collect();
             if shared.is_empty() {
                 break;
@@ -142,7 +147,7 @@ impl Mesh {
                 tb.flip(i, j, pts, s2);
             }
         }
-        let tri = [tri[0].clone(), tb];
+        let tri = [ta, tb];
         let mut m = Mesh { n, tris: Vec::new(), at: KeyMap::default(), slot: KeyMap::default(), ends: Vec::new(), len: Vec::new(), paths: vec![Vec::new(); n] };
         for b in bars(pieces, &tri) {
             if m.slot.insert(undirected(b.i, b.j), m.ends.len()).is_some() {
@@ -185,6 +190,11 @@ impl Mesh {
         self.slot.get(&undirected(i, j)).map(|&s| self.len[s])
     }
 
+    /// The lengths of triangle `t`'s edges t0 → t1, t1 → t2, t2 → t0.
+    pub(crate) fn triangle_lengths(&self, t: [usize; 3]) -> Option<[f64; 3]> {
+        Some([self.length(t[0], t[1])?, self.length(t[1], t[2])?, self.length(t[2], t[0])?])
+    }
+
     /// Whether the seam edge `s` → `s + 1` is an edge of the mesh (its path crosses nothing).
     pub(crate) fn seam_is_edge(&self, i: usize, j: usize) -> bool {
         let n = self.n;
@@ -201,9 +211,10 @@ impl Mesh {
         Some([[0.0, 0.0], [d, 0.0], pk, pl])
     }
 
-    /// The flip of edge `i`–`j` as [`Mesh::flip`] would do it, without doing it: the new
-    /// diagonal's ends k (on the side of i → j) and l, and its length; `None` when it cannot.
-    pub(crate) fn flip_preview(&self, i: usize, j: usize) -> Option<(usize, usize, f64)> {
+    /// The quad of a flippable edge `i`–`j`: the ends k (on the side of i → j) and l of the other
+    /// diagonal and the quad's layout ([`Mesh::layout`]); `None` when that diagonal is an edge
+    /// already or the quad is not strictly convex.
+    fn flippable(&self, i: usize, j: usize) -> Option<(usize, usize, [[f64; 2]; 4])> {
         let (k, l) = (self.opposite(i, j)?, self.opposite(j, i)?);
         if k == l || self.slot.contains_key(&undirected(k, l)) {
             return None;
@@ -214,6 +225,13 @@ impl Mesh {
         if orient(q[2], q[0], q[3]) <= eps || orient(q[3], q[1], q[2]) <= eps {
             return None;
         }
+        Some((k, l, q))
+    }
+
+    /// The flip of edge `i`–`j` as [`Mesh::flip`] would do it, without doing it: the new
+    /// diagonal's ends k (on the side of i → j) and l, and its length; `None` when it cannot.
+    pub(crate) fn flip_preview(&self, i: usize, j: usize) -> Option<(usize, usize, f64)> {
+        let (k, l, q) = self.flippable(i, j)?;
         Some((k, l, (q[2][0] - q[3][0]).hypot(q[2][1] - q[3][1])))
     }
 
@@ -222,8 +240,8 @@ impl Mesh {
     /// seam paths through the quad follow. Returns whether it flipped.
     pub(crate) fn flip(&mut self, i: usize, j: usize) -> bool {
         let (Some(t1), Some(t2)) = (self.triangle(i, j), self.triangle(j, i)) else { return false };
-        let Some((k, l, d)) = self.flip_preview(i, j) else { return false };
-        let Some(q) = self.layout(i, j, k, l) else { return false };
+        let Some((k, l, q)) = self.flippable(i, j) else { return false };
+        let d = (q[2][0] - q[3][0]).hypot(q[2][1] - q[3][1]);
         let quad = [i, j, k, l];
         let at = |v: usize| quad.iter().position(|&w| w == v).map(|a| q[a]);
         let locate = |p: PathPoint| -> Option<[f64; 2]> {
@@ -319,12 +337,9 @@ impl Mesh {
             let mut any = false;
             for ti in 0..self.tris.len() {
                 let t = self.tris[ti];
-                let Some(l) = (0..3).map(|a| self.length(t[a], t[(a + 1) % 3])).collect::<Option<Vec<f64>>>() else { continue };
+                let Some(l) = self.triangle_lengths(t) else { continue };
                 // The angle at corner a + 2, across from edge a → a + 1.
-                let straight = (0..3).find(|&a| {
-                    let (c, b, o) = (l[a], l[(a + 1) % 3], l[(a + 2) % 3]);
-                    (b * b + o * o - c * c) / (2.0 * b * o) < -1.0 + 1e-12
-                });
+                let straight = (0..3).find(|&a| cos_opposite(l[a], l[(a + 1) % 3], l[(a + 2) % 3]) < -1.0 + 1e-12);
                 if let Some(a) = straight {
                     if self.flip(t[a], t[(a + 1) % 3]) {
                         flips += 1;
@@ -345,8 +360,8 @@ impl Mesh {
     }
 
     /// Every edge as (i, j), in the order of their slots ([`Mesh::slot_of`]).
-    pub(crate) fn edges(&self) -> Vec<(usize, usize)> {
-        self.ends.clone()
+    pub(crate) fn edges(&self) -> &[(usize, usize)] {
+        &self.ends
     }
 
     /// The slot of edge `i`–`j`: its index in [`Mesh::edges`].
@@ -385,8 +400,7 @@ mod tests {
         for &t in &m.tris {
             for a in 0..3 {
                 let (b, c) = (t[(a + 1) % 3], t[(a + 2) % 3]);
-                let (lb, lc, lo) = (m.length(t[a], b).unwrap(), m.length(t[a], c).unwrap(), m.length(b, c).unwrap());
-                sum[t[a]] += ((lb * lb + lc * lc - lo * lo) / (2.0 * lb * lc)).clamp(-1.0, 1.0).acos();
+                sum[t[a]] += cos_opposite(m.length(b, c).unwrap(), m.length(t[a], b).unwrap(), m.length(t[a], c).unwrap()).acos();
             }
         }
         sum
@@ -409,8 +423,7 @@ mod tests {
             seed ^= seed << 13;
             seed ^= seed >> 7;
             seed ^= seed << 17;
-            let edges = m.edges();
-            let (i, j) = edges[(seed % edges.len() as u64) as usize];
+            let (i, j) = m.edges()[(seed % m.edges().len() as u64) as usize];
             if m.flip(i, j) {
                 flips += 1;
             }

@@ -13,14 +13,10 @@
 use super::super::metric::{self, orient, Triangulation};
 use super::super::seam::{FlatPiece, SeamPieces};
 use super::super::vec3::{norm, sub, V3};
-use super::intrinsic::Mesh;
+use super::intrinsic::{lerp2, Mesh};
 
 fn lerp3(a: V3, b: V3, t: f64) -> V3 {
     [0, 1, 2].map(|c| a[c] + t * (b[c] - a[c]))
-}
-
-fn lerp2(a: [f64; 2], b: [f64; 2], t: f64) -> [f64; 2] {
-    [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
 }
 
 /// A convex polygon (counter-clockwise in `pts`, possibly with several vertices on a line)
@@ -222,8 +218,7 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
         if tris.len() != nm - 2 || (area - polygon).abs() > 1e-9 * polygon.abs() {
             return None;
         }
-        let arc_mid = (0..nm).map(|m| lerp2(q[m], q[(m + 1) % nm], 0.5)).collect();
-        flat.push(FlatPiece { pts: q.clone(), arc_mid, area: pieces.flat[p].area, perimeter: pieces.flat[p].perimeter });
+        flat.push(FlatPiece::on_chords(q.clone(), pieces.flat[p].area, pieces.flat[p].perimeter));
         tri.push(Triangulation::from_tris(nm, tris));
     }
     let (b, a) = (flat.pop()?, flat.pop()?);

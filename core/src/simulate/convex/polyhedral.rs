@@ -100,10 +100,7 @@ pub(crate) fn solve_polyhedral(pieces: &SeamPieces, cap: usize, steps: &mut (usi
     let seat = |idx: &[(usize, f64)]| -> SeamPieces {
         let piece = |p: usize| {
             let f = &pieces.flat[p];
-            let pts: Vec<[f64; 2]> = idx.iter().map(|&(m, t)| on_side(f, &cones, m, t)).collect();
-            let q = pts.len();
-            let arc_mid = (0..q).map(|m| [0.5 * (pts[m][0] + pts[(m + 1) % q][0]), 0.5 * (pts[m][1] + pts[(m + 1) % q][1])]).collect();
-            FlatPiece { pts, arc_mid, area: f.area, perimeter: f.perimeter }
+            FlatPiece::on_chords(idx.iter().map(|&(m, t)| on_side(f, &cones, m, t)).collect(), f.area, f.perimeter)
         };
         SeamPieces { n: idx.len(), flat: [piece(0), piece(1)] }
     };
@@ -215,9 +212,8 @@ pub(crate) fn lay_on(
         at.push(s);
         last = Some(s);
     }
-    for p in 0..2 {
-        let f = &mut moved.flat[p];
-        f.arc_mid = (0..n).map(|m| [0.5 * (f.pts[m][0] + f.pts[(m + 1) % n][0]), 0.5 * (f.pts[m][1] + f.pts[(m + 1) % n][1])]).collect();
+    for f in moved.flat.iter_mut() {
+        *f = FlatPiece::on_chords(std::mem::take(&mut f.pts), f.area, f.perimeter);
     }
     // Every sample on the straight segment between its neighbouring seam points of `small`, and
     // each piece cut along `small`'s chords: every triangle then lies in a face.
