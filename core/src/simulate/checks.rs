@@ -99,10 +99,15 @@ pub(crate) fn folded_flat(x: &[V3], tri: &[Triangulation; 2]) -> bool {
 /// vertices a whole size outside some face's plane. A closed surface that is convex at every
 /// edge and embedded is convex (Hadamard), so the two tests together rule out such branches.
 pub(crate) fn outside(x: &[V3], tri: &[Triangulation; 2], stride: usize) -> f64 {
+    outside_of(x, tri, stride, |_, _| true)
+}
+
+/// [`outside`] against the faces `face(piece, triangle)` keeps.
+fn outside_of(x: &[V3], tri: &[Triangulation; 2], stride: usize, face: impl Fn(usize, [usize; 3]) -> bool) -> f64 {
     let (_, size) = centroid_and_radius(x);
     let mut worst = 0.0f64;
     for (p, t) in tri.iter().enumerate() {
-        for &[a, b, c] in &t.tris {
+        for &[a, b, c] in t.tris.iter().filter(|&&t| face(p, t)) {
             let (b, c) = if p == 0 { (b, c) } else { (c, b) };
             let m = cross(sub(x[b], x[a]), sub(x[c], x[a]));
             let l = norm(m);
@@ -111,6 +116,44 @@ pub(crate) fn outside(x: &[V3], tri: &[Triangulation; 2], stride: usize) -> f64 
             }
             let top = x.iter().step_by(stride.max(1)).map(|q| dot(m, sub(*q, x[a]))).fold(0.0, f64::max);
             worst = worst.max(top / l);
+        }
+    }
+    if size > 0.0 { worst / size } else { 0.0 }
+}
+
+/// Smallest `2·area / longest²` (the sine of a needle's sharp angle, or of a cap's blunt one) of
+/// a flat triangle whose plane [`sound_outside`] trusts.
+pub(crate) const SOUND_FACE: f64 = 2e-2;
+
+/// [`outside`] (every vertex) against the faces that are not slivers in their flat piece
+/// `flat[p]` ([`SOUND_FACE`]).
+///
+/// A sliver's plane in 3D is set by a side far shorter than the others, so it tilts with
+/// movements that change no length noticeably: on two congruent 120 × 80 rectangles with 1 mm
+/// corners at 7/16, a triangle of three nearly collinear seam samples (angle 179.2°) tilted
+/// until a vertex stood 72 mm "above" it, on a shape convex to 1e-9 of its size by every other
+/// face. A whole-shape failure, which this test is for, puts vertices outside sound faces too.
+pub(crate) fn sound_outside(x: &[V3], tri: &[Triangulation; 2], flat: [&[[f64; 2]]; 2]) -> f64 {
+    outside_of(x, tri, 1, |p, [a, b, c]| {
+        let q = flat[p];
+        let d2 = |u: [f64; 2], v: [f64; 2]| (u[0] - v[0]).powi(2) + (u[1] - v[1]).powi(2);
+        let longest = d2(q[a], q[b]).max(d2(q[b], q[c])).max(d2(q[c], q[a]));
+        metric::orient(q[a], q[b], q[c]).abs() >= SOUND_FACE * longest
+    })
+}
+
+/// Depth of the worst dent relative to the shape's size: over the reflex chords, how far the
+/// far vertex of the neighbouring triangle stands outside the outward face's plane. Unlike
+/// [`worst_reflex`]'s sine it stays small where a needle triangle (a long chord to two seam
+/// samples 0.1 mm apart) tilts: there a sine of 0.08 is a dent of 8 µm.
+pub(crate) fn dent_depth(x: &[V3], tri: &[Triangulation; 2]) -> f64 {
+    let (_, size) = centroid_and_radius(x);
+    let mut worst = 0.0f64;
+    for (p, t) in tri.iter().enumerate() {
+        for (i, j) in t.chords() {
+            if let (Some(s), Some(l)) = (reflex_sine(x, t, p, i, j), t.opposite(j, i)) {
+                worst = worst.max(s * norm(sub(x[l], x[i])));
+            }
         }
     }
     if size > 0.0 { worst / size } else { 0.0 }
