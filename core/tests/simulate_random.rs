@@ -201,13 +201,15 @@ proptest! {
                 let (u, v) = (r.seam.iter().position(|&s| s == i).unwrap(), r.seam.iter().position(|&s| s == j).unwrap());
                 let other = &flat[1 - p as usize];
                 // Converged: a chord keeps its flat length; a seam edge, one length for two
-                // pieces, lies between A's chord and B's.
+                // pieces, lies between A's chord and B's. Both to 1e-5: the chord path meets its
+                // length equations to 1e-7, the intrinsic path (creases across the seam) to 1e-5
+                // (`convex::crossing::POLISHED_STRAIN`).
                 if u.abs_diff(v) == 1 || u.abs_diff(v) == n - 1 {
                     let alt = dist2(other[u], other[v]);
-                    prop_assert!(l >= want.min(alt) * (1.0 - 1e-6) && l <= want.max(alt) * (1.0 + 1e-6),
+                    prop_assert!(l >= want.min(alt) * (1.0 - 1e-5) && l <= want.max(alt) * (1.0 + 1e-5),
                         "converged, but seam edge {u}-{v} is {l}, not between its chords {want} and {alt}");
                 } else {
-                    prop_assert!((l - want).abs() <= 1e-6 * want, "converged, but chord {u}-{v} of piece {p} is {l}, flat {want}");
+                    prop_assert!((l - want).abs() <= 1e-5 * want, "converged, but chord {u}-{v} of piece {p} is {l}, flat {want}");
                 }
             }
         }

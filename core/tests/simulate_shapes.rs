@@ -873,15 +873,15 @@ fn assert_same_volume_half_a_turn_on(r: &Contour, k: usize, v: f64) {
 }
 
 /// What a converged answer of two convex pieces `a` and `b` promises, checked from the mesh
-/// alone: closed, every edge within the seam samples' floor of its flat length (A's and B's
-/// chords of one seam edge differ at tight corners), no vertex more than 1e-2 of the size above a
-/// face that is not a sliver ([`sound_convexity_violation`]), no self-intersection, the pieces'
-/// area and a seam as long as the outline. Returns the volume.
+/// alone: closed; every edge within the seam samples' floor of its flat length (A's and B's
+/// chords of one seam edge differ at tight corners), plus the length equations' 1e-5; no vertex
+/// more than 1e-2 of the size above a face that is not a sliver ([`sound_convexity_violation`]);
+/// no self-intersection; the pieces' area; a seam as long as the outline. Returns the volume.
 fn assert_convex_answer(s: &Simulation, what: &str, a: &Contour, b: &Contour) -> f64 {
     assert!(s.stats.converged, "{what}: wanted converged, got {:?}", s.stats);
     assert_closed(s);
     let (strain, floor) = (mesh_checks::max_edge_strain(s), mesh_checks::seam_floor(s));
-    assert!(strain <= floor + 1e-6, "{what}: wanted every edge within the seam floor {floor:.2e} of its flat length, got {strain:.2e}");
+    assert!(strain <= floor + 1e-5, "{what}: wanted every edge within the seam floor {floor:.2e} of its flat length, got {strain:.2e}");
     let cv = sound_convexity_violation(s);
     assert!(cv < 1e-2, "{what}: a vertex lies {cv:.2e} (relative) outside the plane of a face that is no sliver");
     let (v, area) = volume_area(s);
@@ -942,4 +942,18 @@ fn test_issue_14_needle_triangles_do_not_hide_the_convex_form() {
         .collect();
     println!("triangle r 1 + circle: volumes {volumes:?}");
     assert!((volumes[0] - volumes[1]).abs() / volumes[0] < 1e-3, "triangle r 1 + circle: wanted one form at every offset, got volumes {volumes:?}");
+}
+
+/// Regression (issue 14): two congruent 200 × 40 rectangles with 8 mm corners, a common student
+/// design, ended unconverged at 11 of 16 offsets (4e-2 strain after 5,000 steps): the intrinsic
+/// path's last relax, whose flips make no cap, settles at 1.5–5e-6 on the length equations and
+/// was held to 1e-6. It is now held to 1e-5, a hundredth of what `converged` promises.
+#[test]
+fn test_issue_14_rectangles_with_8mm_corners_settle_within_1e_5() {
+    let rect = shapes::rounded_polygon(&[(0.0, 0.0), (200.0, 0.0), (200.0, 40.0), (0.0, 40.0)], 8.0);
+    for k in [3, 7] {
+        let s = run(&rect, &rect, k as f64 / 16.0 * perimeter(&rect), 256);
+        let v = assert_convex_answer(&s, &format!("200 × 40 r 8 at {k}/16"), &rect, &rect);
+        assert_same_volume_half_a_turn_on(&rect, k, v);
+    }
 }

@@ -20,7 +20,7 @@
 //!    cap ([`Chords::without_caps`]), and held to convexity as far as its sound faces can tell
 //!    ([`sound`]).
 //!
-//! Of the survey's congruent gluings 315 of 384 converge (48 of them with seam vertices added),
+//! Of the survey's congruent gluings 335 of 384 converge (68 of them with seam vertices added),
 //! 360 of 384 with a circle. Among the misses: 21 superellipses, whose outlines bend inward at a
 //! few samples (no convex metric to embed); embeddings that do not finish within [`NEWTON`]
 //! steps, or whose continuation stalls for want of a second edge between two vertices (a
@@ -51,10 +51,13 @@ pub(crate) const NEWTON: usize = 400;
 pub(crate) const POLISH: usize = 500;
 
 /// Largest strain of the chord mesh's length equations ([`bars`]) accepted from the last polish.
-/// The chord path asks [`super::super::isometry::STRAIN_TOL`] (1e-7); from the embedding, the
-/// polish's flips restart the damping and 500 steps end at 2–9e-7 on the two 200 × 40 rectangles
-/// with 1 mm corners. 1e-6 is what the tests ask of a converged chord mesh's chords.
-pub(crate) const POLISHED_STRAIN: f64 = 1e-6;
+/// The chord path asks [`super::super::isometry::STRAIN_TOL`] (1e-7). From the embedding, the
+/// polish's flips restart the damping, and without caps ([`Chords::without_caps`]) some
+/// realizations are out of reach: 500 steps end at 2–9e-7 on the two 200 × 40 rectangles with
+/// 1 mm corners, and at 1.5–5e-6 on 200 × 40 with 8 mm corners, where 2,000 steps get no
+/// further. 1e-5 (a micrometre on a 10 cm chord, a hundredth of what `converged` promises)
+/// takes those: with 1e-6 the survey's congruent gluings found 315 of 384, with 1e-5 335.
+pub(crate) const POLISHED_STRAIN: f64 = 1e-5;
 
 /// The D-form of the sample polygons `pieces` (both convex) by the steps of the module docs:
 /// the pieces with a seam vertex added where a crease crosses the seam, the positions and the
