@@ -957,3 +957,26 @@ fn test_issue_14_rectangles_with_8mm_corners_settle_within_1e_5() {
         assert_same_volume_half_a_turn_on(&rect, k, v);
     }
 }
+
+/// Regression (issue 14): Bobenko & Izmestiev's flips may need two edges between the same two
+/// vertices (two straight segments of the metric), which the intrinsic mesh refused. The
+/// embedding then stalled: a triangle with 1 mm corners on a circle ended 8e-2 strained at every
+/// even sixteenth, and two congruent hexagons with 1 mm corners 1e-2 at 0 and 1/2.
+#[test]
+fn test_issue_14_flips_that_need_a_second_edge_between_two_vertices() {
+    // A circle is the same wherever the seam starts on it: the offsets give one form.
+    let tri = shapes::rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (30.0, 60.0)], 1.0);
+    let circle = shapes::circle_for(&tri);
+    let volumes: Vec<f64> = [0, 2]
+        .iter()
+        .map(|&k| assert_convex_answer(&run(&tri, &circle, k as f64 / 16.0 * perimeter(&tri), 256), &format!("triangle r 1 + circle at {k}/16"), &tri, &circle))
+        .collect();
+    println!("triangle r 1 + circle: volumes {volumes:?}");
+    assert!((volumes[0] - volumes[1]).abs() / volumes[0] < 1e-3, "triangle r 1 + circle: wanted one form at every offset, got volumes {volumes:?}");
+    // A hexagon is symmetric under a half turn.
+    let third = std::f64::consts::PI / 3.0;
+    let hexagon: Vec<(f64, f64)> = (0..6).map(|k| (50.0 * (k as f64 * third).cos(), 50.0 * (k as f64 * third).sin())).collect();
+    let hexagon = shapes::rounded_polygon(&hexagon, 1.0);
+    let v = assert_convex_answer(&run(&hexagon, &hexagon, 0.0, 256), "hexagon r 1 with a congruent copy at 0", &hexagon, &hexagon);
+    assert_same_volume_half_a_turn_on(&hexagon, 0, v);
+}

@@ -89,16 +89,16 @@ fn state_with(mesh: &Mesh, r: &[f64], with_delta: bool) -> Option<State> {
     let mut kappa = vec![TAU; n];
     let mut delta = vec![TAU; n];
     let mut alpha = Vec::with_capacity(mesh.tris.len());
-    let mut theta = vec![0.0; mesh.edges().len()];
-    for &t in &mesh.tris {
-        let g = tet(mesh.triangle_lengths(t)?, t.map(|v| r[v]), with_delta);
+    let mut theta = vec![0.0; mesh.edge_count()];
+    for (ti, &t) in mesh.tris.iter().enumerate() {
+        let g = tet(mesh.side_lengths(ti), t.map(|v| r[v]), with_delta);
         if !g.real {
             return None;
         }
         for a in 0..3 {
             kappa[t[a]] -= g.beta[a];
             delta[t[a]] -= g.gamma[a];
-            theta[mesh.slot_of(t[a], t[(a + 1) % 3])?] += g.alpha[a];
+            theta[mesh.side[ti][a]] += g.alpha[a];
         }
         alpha.push(g.alpha);
     }
@@ -110,9 +110,10 @@ fn state_with(mesh: &Mesh, r: &[f64], with_delta: bool) -> Option<State> {
 fn slack(mesh: &Mesh, r: &[f64]) -> f64 {
     mesh.edges()
         .iter()
-        .filter_map(|&(i, j)| {
-            let l = mesh.length(i, j)?;
-            Some((l + r[i] - r[j]).min(r[i] + r[j] - l).min(l + r[j] - r[i]))
+        .enumerate()
+        .map(|(e, &(i, j))| {
+            let l = mesh.len(e);
+            (l + r[i] - r[j]).min(r[i] + r[j] - l).min(l + r[j] - r[i])
         })
         .fold(f64::INFINITY, f64::min)
 }
@@ -124,18 +125,18 @@ fn slack(mesh: &Mesh, r: &[f64]) -> f64 {
 fn jacobian(mesh: &Mesh, r: &[f64], s: &State) -> Option<(Vec<f64>, Vec<f64>)> {
     let n = mesh.n;
     let mut diag = vec![0.0; n];
-    let mut off = vec![0.0; mesh.edges().len()];
+    let mut off = vec![0.0; mesh.edge_count()];
     for (ti, &t) in mesh.tris.iter().enumerate() {
         for a in 0..3 {
             let (i, j) = (t[a], t[(a + 1) % 3]);
-            let l = mesh.length(i, j)?;
+            let l = mesh.len(mesh.side[ti][a]);
             let (ri, rj) = (r[i], r[j]);
             let sij = sin_of(cos_opposite(rj, l, ri));
             let sji = sin_of(cos_opposite(ri, l, rj));
             // This triangle's half of the edge's entry: cot α on its side.
             let v = 1.0 / s.alpha[ti][a].tan() / (l * sij * sji);
             let cphi = cos_opposite(l, ri, rj);
-            off[mesh.slot_of(i, j)?] += v;
+            off[mesh.side[ti][a]] += v;
             diag[i] -= cphi * v;
             diag[j] -= cphi * v;
         }
@@ -233,15 +234,9 @@ pub(crate) const NEWTON_STEPS: usize = 20;
 /// polyhedron folds inward there) until none does or none can be flipped; `known` is the state
 /// at `r` when the caller has it. The number of flips.
 fn flip_to_convex(mesh: &mut Mesh, r: &[f64], eps: f64, known: Option<&State>) -> usize {
-    // The tetrahedron on the triangle holding u → v, and the corner of u in it.
-    let tet_at = |mesh: &Mesh, u: usize, v: usize| -> Option<(Tet, usize)> {
-        let t = mesh.tris[mesh.triangle(u, v)?];
-        Some((tet(mesh.triangle_lengths(t)?, t.map(|w| r[w]), false), (0..3).find(|&a| t[a] == u)?))
-    };
-    let theta_at = |mesh: &Mesh, i: usize, j: usize| -> Option<f64> {
-        let (a, ca) = tet_at(mesh, i, j)?;
-        let (b, cb) = tet_at(mesh, j, i)?;
-        Some(a.alpha[ca] + b.alpha[cb])
+    // The dihedral angle sum at edge slot e: the angles of the two tetrahedra on its sides.
+    let theta_at = |mesh: &Mesh, e: usize| -> f64 {
+        mesh.halves(e).iter().map(|&(ti, a)| tet(mesh.side_lengths(ti), mesh.tris[ti].map(|w| r[w]), false).alpha[a]).sum()
     };
     let mut flips = 0;
     for pass in 0..mesh.n {
@@ -257,19 +252,17 @@ fn flip_to_convex(mesh: &mut Mesh, r: &[f64], eps: f64, known: Option<&State>) -
                 None => return flips,
             },
         };
-        let candidates: Vec<(usize, usize)> = mesh.edges().iter().zip(&s.theta).filter(|e| *e.1 > PI + eps).map(|e| *e.0).collect();
-        for (i, j) in candidates {
+        let candidates: Vec<usize> = (0..mesh.edge_count()).filter(|&e| s.theta[e] > PI + eps).collect();
+        for e in candidates {
             // Earlier flips of this pass may have changed it: measured again.
-            if theta_at(mesh, i, j).is_none_or(|t| t <= PI + eps) {
+            if theta_at(mesh, e) <= PI + eps {
                 continue;
             }
-            let Some((k, l, d)) = mesh.flip_preview(i, j) else { continue };
+            let Some(p) = mesh.flip_preview(e) else { continue };
             // Only a flip whose two new tetrahedra exist (k, i, l and l, j, k).
-            let real = |a: usize, b: usize, c: usize| -> bool {
-                let (Some(ab), Some(bc)) = (mesh.length(a, b), mesh.length(b, c)) else { return false };
-                tet([ab, bc, d], [a, b, c].map(|w| r[w]), false).real
-            };
-            if real(k, i, l) && real(l, j, k) && mesh.flip(i, j) {
+            let real = |sides: [f64; 3], v: [usize; 3]| tet(sides, v.map(|w| r[w]), false).real;
+            let [ki, il, lj, jk] = p.sides;
+            if real([ki, il, p.d], [p.k, p.i, p.l]) && real([lj, jk, p.d], [p.l, p.j, p.k]) && mesh.flip(e) {
                 flips += 1;
                 any = true;
             }
@@ -287,11 +280,17 @@ pub(crate) fn flip_to_delaunay(mesh: &mut Mesh) -> usize {
     let mut flips = 0;
     for _ in 0..8 * mesh.n {
         let mut any = false;
-        for (i, j) in mesh.edges().to_vec() {
-            let (Some(k), Some(l)) = (mesh.opposite(i, j), mesh.opposite(j, i)) else { continue };
-            let (Some(lij), Some(lik), Some(ljk), Some(lil), Some(ljl)) = (mesh.length(i, j), mesh.length(i, k), mesh.length(j, k), mesh.length(i, l), mesh.length(j, l)) else { continue };
-            let angle = cos_opposite(lij, lik, ljk).acos() + cos_opposite(lij, lil, ljl).acos();
-            if angle > PI + 1e-12 && mesh.flip(i, j) {
+        for e in 0..mesh.edge_count() {
+            // The angle across from e in each of its triangles.
+            let angle: f64 = mesh
+                .halves(e)
+                .iter()
+                .map(|&(ti, a)| {
+                    let l = mesh.side_lengths(ti);
+                    cos_opposite(l[a], l[(a + 1) % 3], l[(a + 2) % 3]).acos()
+                })
+                .sum();
+            if angle > PI + 1e-12 && mesh.flip(e) {
                 flips += 1;
                 any = true;
             }
@@ -328,7 +327,7 @@ fn fourth_point(a: V3, b: V3, c: V3, da: f64, db: f64, dc: f64, above: bool) -> 
 fn layout(mesh: &Mesh, r: &[f64]) -> Option<Vec<V3>> {
     let n = mesh.n;
     let t0 = *mesh.tris.first()?;
-    let l = mesh.triangle_lengths(t0)?;
+    let l = mesh.side_lengths(0);
     let apex = [0.0; 3];
     // The first triangle in the plane z = 0, counter-clockwise seen from +z, the apex below.
     let c0 = cos_opposite(l[1], l[2], l[0]);
@@ -343,15 +342,17 @@ fn layout(mesh: &Mesh, r: &[f64]) -> Option<Vec<V3>> {
         let q = corner[ti]?;
         for a in 0..3 {
             let (u, v) = (t[a], t[(a + 1) % 3]);
-            let Some(tj) = mesh.triangle(v, u) else { continue };
+            // Across side a: triangle tj with side b = v → u, then u → w and w → v.
+            let (tj, b) = mesh.across(ti, a);
             if corner[tj].is_some() {
                 continue;
             }
-            let w = mesh.opposite(v, u)?;
+            let w = mesh.tris[tj][(b + 2) % 3];
+            let lj = mesh.side_lengths(tj);
             let (xu, xv) = (q[a], q[(a + 1) % 3]);
             // Triangle v, u, w is outward (its normal points away from the apex): w lies on the
             // side of the plane through v, u and the apex where (v, u, apex) turns counter-clockwise.
-            let xw = fourth_point(xv, xu, apex, mesh.length(v, w)?, mesh.length(u, w)?, r[w], true);
+            let xw = fourth_point(xv, xu, apex, lj[(b + 2) % 3], lj[(b + 1) % 3], r[w], true);
             let tw = mesh.tris[tj];
             corner[tj] = Some(tw.map(|z| if z == u { xu } else if z == v { xv } else { xw }));
             queue.push_back(tj);
@@ -380,8 +381,8 @@ pub(crate) fn embed(mesh: &mut Mesh, max_newton: usize, iterations: &mut usize) 
     flip_to_delaunay(mesh);
     let n = mesh.n;
     let mut big = 0.0f64;
-    for &t in &mesh.tris {
-        let l = mesh.triangle_lengths(t)?;
+    for ti in 0..mesh.tris.len() {
+        let l = mesh.side_lengths(ti);
         let s = 0.5 * (l[0] + l[1] + l[2]);
         let area = (s * (s - l[0]) * (s - l[1]) * (s - l[2])).max(0.0).sqrt();
         big = big.max(l[0] * l[1] * l[2] / (4.0 * area.max(f64::MIN_POSITIVE)));

@@ -11,7 +11,8 @@
 //! 1. the two pieces' Delaunay chord triangulations become one intrinsic triangulation of the
 //!    glued metric ([`super::intrinsic::Mesh`]);
 //! 2. Bobenko & Izmestiev's method finds the polyhedron's triangulation and vertex positions
-//!    ([`super::alexandrov::embed`]), flipping edges across the seam where it must;
+//!    ([`super::alexandrov::embed`]), flipping edges across the seam where it must, first with
+//!    one edge per vertex pair and, where that stalls, with several ([`Mesh::multi`]);
 //! 3. Levenberg–Marquardt on that fixed triangulation polishes the positions to its length
 //!    equations ([`Frozen`]);
 //! 4. the triangles are cut along the seam ([`super::overlay::cut`]), with a seam vertex where a
@@ -20,13 +21,13 @@
 //!    cap ([`Chords::without_caps`]), and held to convexity as far as its sound faces can tell
 //!    ([`sound`]).
 //!
-//! Of the survey's congruent gluings 335 of 384 converge (68 of them with seam vertices added),
-//! 360 of 384 with a circle. Among the misses: 21 superellipses, whose outlines bend inward at a
-//! few samples (no convex metric to embed); embeddings that do not finish within [`NEWTON`]
-//! steps, or whose continuation stalls for want of a second edge between two vertices (a
-//! triangle with 1 mm corners on a circle, at every even sixteenth); and answers whose step 5
-//! does not settle within [`POLISHED_STRAIN`], because the chord meshes' length equations (each
-//! seam edge at the mean of A's and B's chords) are not quite the metric that was embedded.
+//! Of the survey's congruent gluings 339 of 384 converge (67 of them with seam vertices added),
+//! 368 of 384 with a circle. Among the misses: 21 superellipses, whose outlines bend inward at a
+//! few samples (no convex metric to embed); embeddings whose continuation stalls within
+//! [`NEWTON`] steps with one edge per vertex pair and [`MULTI_NEWTON`] with several; and answers
+//! whose step 5 does not settle within [`POLISHED_STRAIN`], because the chord meshes' length
+//! equations (each seam edge at the mean of A's and B's chords) are not quite the metric that
+//! was embedded.
 
 use super::super::checks::{dent_depth, folded_flat, sound_outside, OUTSIDE_TOL};
 use super::super::isometry::{bars, max_strain, Bar, STEP_TOL};
@@ -45,6 +46,10 @@ pub(crate) const MAX_SEAM: usize = 256;
 
 /// Newton steps allowed to [`super::alexandrov::embed`]: the survey's answers take 60–250.
 pub(crate) const NEWTON: usize = 400;
+
+/// Newton steps allowed to the embedding with several edges per vertex pair, after the one with
+/// one edge per pair stalled: the survey's take 45–111.
+pub(crate) const MULTI_NEWTON: usize = 200;
 
 /// Levenberg–Marquardt steps of each polish: from the embedding (strain ~1e-6) it takes 2–60,
 /// and from there to the chord mesh's own length equations up to a few hundred.
@@ -70,11 +75,21 @@ pub(crate) fn solve(pieces: &SeamPieces, cap: usize, steps: &mut (usize, usize))
         return None;
     }
     let left = |steps: &(usize, usize)| cap.saturating_sub(steps.0);
-    let mut mesh = Mesh::from_chords(pieces, &[triangulate(pieces, 0).ok()?, triangulate(pieces, 1).ok()?])?;
-    let mut newton = 0;
-    let embedded = super::alexandrov::embed(&mut mesh, NEWTON.min(left(steps)), &mut newton);
-    steps.0 += newton;
-    let mut x = embedded?;
+    let start = Mesh::from_chords(pieces, &[triangulate(pieces, 0).ok()?, triangulate(pieces, 1).ok()?])?;
+    // One edge per vertex pair first; where that stalls after refusing a flip for want of a
+    // second edge, again with several ([`Mesh::multi`]) on [`MULTI_NEWTON`] steps.
+    let mut refused = 0;
+    let (mut mesh, mut x) = [(false, NEWTON), (true, MULTI_NEWTON)].into_iter().find_map(|(multi, budget)| {
+        if multi && refused == 0 {
+            return None;
+        }
+        let mut mesh = start.clone().multi(multi);
+        let mut newton = 0;
+        let embedded = super::alexandrov::embed(&mut mesh, budget.min(left(steps)), &mut newton);
+        steps.0 += newton;
+        refused = mesh.refused();
+        Some((mesh, embedded?))
+    })?;
     relax_with(&mut Frozen { n: mesh.n, bars: mesh.bars() }, &mut x, POLISH.min(left(steps)), STEP_TOL, Orientation::Kept, WARM).tally(steps);
     mesh.flip_straight_angles();
     let (cut, mut xs, mut tri) = super::overlay::cut(&mesh, pieces, &x)?;

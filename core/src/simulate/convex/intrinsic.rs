@@ -16,18 +16,24 @@
 //! method flips it to the polyhedron's triangulation ([`super::alexandrov`]). Each seam edge is
 //! tracked through the flips as the list of mesh edges its straight segment crosses (its
 //! *path*), so that [`super::overlay`] can cut the triangles along the seam into a mesh of the
-//! two flat pieces. The mesh holds at most one edge between two vertices and refuses a flip that
-//! would make a second; a general intrinsic triangulation allows them, and the few gluings that
-//! end unconverged for want of one (a triangle with 1 mm corners on a circle) are left so.
+//! two flat pieces. Two vertices may be joined by several edges (different straight segments of
+//! the metric, e.g. a chord of A and a chord of B between the same two samples, or two edges on
+//! either side of a seam point with little curvature): edges are slots, each triangle knows the
+//! slot of each of its sides, and each slot its two sides. With at most one edge per vertex pair,
+//! the Alexandrov flips were refused thousands of times on a triangle with 1 mm corners glued to
+//! a circle and on congruent rectangles, and the embedding stalled; [`Mesh::multi`] says when a
+//! flip may add a second edge.
 
-use super::super::isometry::{bars, Bar};
+use super::super::isometry::Bar;
 use super::super::metric::{self, orient, KeyMap, Triangulation};
 use super::super::seam::SeamPieces;
 use crate::order::pair_key;
 
-/// Where a seam edge's path crosses an edge `u`–`v` of the mesh: at fraction `f` from `u`.
+/// Where a seam edge's path crosses edge slot `e` of the mesh, whose ends are `u` and `v`: at
+/// fraction `f` from `u`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Crossing {
+    pub(crate) e: usize,
     pub(crate) u: usize,
     pub(crate) v: usize,
     pub(crate) f: f64,
@@ -39,12 +45,21 @@ pub(crate) struct Mesh {
     pub(crate) n: usize,
     /// Triangles, counter-clockwise seen from outside (A's as in its flat piece, B's reversed).
     pub(crate) tris: Vec<[usize; 3]>,
-    /// Directed edge (`pair_key(i, j)`) → the triangle holding i → j.
-    at: KeyMap,
-    /// Undirected edge (`pair_key(min, max)`) → its slot in `ends` and `len`.
-    slot: KeyMap,
+    /// `side[t][a]`: the edge slot of triangle t's side t[a] → t[a + 1].
+    pub(crate) side: Vec<[usize; 3]>,
+    /// Each edge slot's two sides, as (triangle, a).
+    halves: Vec<[(usize, usize); 2]>,
+    /// Each edge slot's ends and length.
     ends: Vec<(usize, usize)>,
     len: Vec<f64>,
+    /// For each seam edge s → s + 1, its slot while it is an edge of the mesh.
+    seam_slot: Vec<Option<usize>>,
+    /// How many edges join each vertex pair (`undirected` key).
+    pairs: KeyMap,
+    /// Whether a flip may join two vertices that an edge joins already (see [`Mesh::multi`]), and
+    /// how many flips were refused for that.
+    multi: bool,
+    refused: std::cell::Cell<usize>,
     /// For each seam edge s → s + 1, the mesh edges its straight segment crosses, in order from
     /// s; empty while the seam edge is itself an edge of the mesh.
     pub(crate) paths: Vec<Vec<Crossing>>,
@@ -85,6 +100,20 @@ fn undirected(i: usize, j: usize) -> u64 {
     pair_key(i.min(j), i.max(j))
 }
 
+/// The flip of an edge as [`Mesh::flip_preview`] sees it: the edge's ends `i` and `j` (in the
+/// order of its first side), the new diagonal's ends `k` (on the side of i → j) and `l` and its
+/// length `d`, and the lengths of the quad's sides k → i, i → l, l → j and j → k (the sides of
+/// the new triangles k, i, l and l, j, k).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Preview {
+    pub(crate) i: usize,
+    pub(crate) j: usize,
+    pub(crate) k: usize,
+    pub(crate) l: usize,
+    pub(crate) d: f64,
+    pub(crate) sides: [f64; 4],
+}
+
 /// The apex of a triangle on base (0, 0)–(`base`, 0) with sides `a` (from the origin) and `b`,
 /// above the base when `side` is positive, below when negative.
 fn apex(base: f64, a: f64, b: f64, side: f64) -> [f64; 2] {
@@ -116,8 +145,9 @@ fn crossing_fraction(p0: [f64; 2], p1: [f64; 2], k: [f64; 2], l: [f64; 2]) -> Op
 
 impl Mesh {
     /// The mesh of the two pieces' chord triangulations `tri`, each first flipped to the Delaunay
-    /// triangulation of its flat polygon ([`delaunay`]), with the chord meshes' lengths ([`bars`]:
-    /// a chord at its flat length, a seam edge at the mean of A's and B's chords).
+    /// triangulation of its flat polygon ([`delaunay`]), with the chord meshes' lengths (a chord
+    /// at its flat length, a seam edge at the mean of A's and B's chords). A chord of A and a
+    /// chord of B between the same two samples are two edges.
     ///
     /// The two chords of a seam edge differ where the pieces curve differently (by ~1e-3 at a
     /// 1 mm corner against a straight side), and one length for both bends the angles of the
@@ -127,15 +157,19 @@ impl Mesh {
     /// converged. In the Delaunay triangulations that apex is a sample of the same curved stretch,
     /// and the worst vertex has −1e-9 rad to spare.
     ///
-    /// `None` when an edge has no positive length, or when B keeps a chord that A has too (the
-    /// mesh holds one edge per vertex pair; B's shared chords are flipped away first where its
-    /// flat quads allow).
+    /// `None` when an edge has no positive length or the triangulations do not close up.
     pub(crate) fn from_chords(pieces: &SeamPieces, tri: &[Triangulation; 2]) -> Option<Mesh> {
         let n = pieces.n;
+        let mut m = Mesh { n, tris: Vec::new(), side: Vec::new(), halves: Vec::new(), ends: Vec::new(), len: Vec::new(), seam_slot: vec![None; n], pairs: KeyMap::default(), multi: false, refused: Default::default(), paths: vec![Vec::new(); n] };
+        // One slot map per kind: A's chords, B's chords, seam edges.
+        let mut slots: [KeyMap; 3] = Default::default();
+        let mut open: Vec<Vec<(usize, usize)>> = Vec::new();
         let mut ta = tri[0].clone();
         delaunay(&mut ta, &pieces.flat[0].pts);
         let mut tb = tri[1].clone();
         delaunay(&mut tb, &pieces.flat[1].pts);
+        // B's chords that A has too, flipped away where B's flat quads allow: without them the
+        // mesh starts with one edge per vertex pair.
         let (pts, a) = (&pieces.flat[1].pts, ta.chords());
         let s2 = metric::size2(pts);
         for _ in 0..8 {
@@ -147,101 +181,137 @@ impl Mesh {
                 tb.flip(i, j, pts, s2);
             }
         }
-        let tri = [ta, tb];
-        let mut m = Mesh { n, tris: Vec::new(), at: KeyMap::default(), slot: KeyMap::default(), ends: Vec::new(), len: Vec::new(), paths: vec![Vec::new(); n] };
-        for b in bars(pieces, &tri) {
-            if m.slot.insert(undirected(b.i, b.j), m.ends.len()).is_some() {
-                return None;
+        for (p, t) in [ta, tb].iter().enumerate() {
+            for tr in &t.tris {
+                // Outward: A's as in its flat piece, B's reversed.
+                let tr = if p == 0 { *tr } else { [tr[0], tr[2], tr[1]] };
+                let ti = m.tris.len();
+                let mut sides = [0; 3];
+                for a in 0..3 {
+                    let (i, j) = (tr[a], tr[(a + 1) % 3]);
+                    let kind = if metric::is_seam(n, i, j) { 2 } else { p };
+                    let e = *slots[kind].entry(undirected(i, j)).or_insert_with(|| {
+                        let d = if kind == 2 { 0.5 * (pieces.chord(0, i, j) + pieces.chord(1, i, j)) } else { pieces.chord(p, i, j) };
+                        m.ends.push((i, j));
+                        m.len.push(d);
+                        open.push(Vec::new());
+                        m.ends.len() - 1
+                    });
+                    open[e].push((ti, a));
+                    sides[a] = e;
+                    if kind == 2 {
+                        let s = if (i + 1) % n == j { i } else { j };
+                        m.seam_slot[s] = Some(e);
+                    }
+                }
+                m.tris.push(tr);
+                m.side.push(sides);
             }
-            m.ends.push((b.i, b.j));
-            m.len.push(b.d);
         }
-        let outward = tri[0].tris.iter().copied().chain(tri[1].tris.iter().map(|t| [t[0], t[2], t[1]]));
-        for t in outward {
-            if (0..3).any(|a| !m.slot.contains_key(&undirected(t[a], t[(a + 1) % 3]))) {
-                return None;
-            }
-            m.tris.push(t);
-            m.index(m.tris.len() - 1);
-        }
-        Some(m)
-    }
-
-    fn index(&mut self, ti: usize) {
-        let t = self.tris[ti];
-        for a in 0..3 {
-            self.at.insert(pair_key(t[a], t[(a + 1) % 3]), ti);
-        }
-    }
-
-    /// The third vertex of the triangle holding the directed edge `i` → `j`.
-    pub(crate) fn opposite(&self, i: usize, j: usize) -> Option<usize> {
-        let t = self.tris[*self.at.get(&pair_key(i, j))?];
-        (0..3).find(|&a| t[a] == i && t[(a + 1) % 3] == j).map(|a| t[(a + 2) % 3])
-    }
-
-    /// The triangle holding the directed edge `i` → `j`.
-    pub(crate) fn triangle(&self, i: usize, j: usize) -> Option<usize> {
-        self.at.get(&pair_key(i, j)).copied()
-    }
-
-    /// The length of edge `i`–`j`.
-    pub(crate) fn length(&self, i: usize, j: usize) -> Option<f64> {
-        self.slot.get(&undirected(i, j)).map(|&s| self.len[s])
-    }
-
-    /// The lengths of triangle `t`'s edges t0 → t1, t1 → t2, t2 → t0.
-    pub(crate) fn triangle_lengths(&self, t: [usize; 3]) -> Option<[f64; 3]> {
-        Some([self.length(t[0], t[1])?, self.length(t[1], t[2])?, self.length(t[2], t[0])?])
-    }
-
-    /// Whether the seam edge `s` → `s + 1` is an edge of the mesh (its path crosses nothing).
-    pub(crate) fn seam_is_edge(&self, i: usize, j: usize) -> bool {
-        let n = self.n;
-        let s = if (i + 1) % n == j { i } else if (j + 1) % n == i { j } else { return false };
-        self.paths[s].is_empty()
-    }
-
-    /// The quad of edge `i`–`j` (triangles i, j, k and j, i, l) laid out in the plane: i at the
-    /// origin, j on the positive x axis, k above, l below.
-    fn layout(&self, i: usize, j: usize, k: usize, l: usize) -> Option<[[f64; 2]; 4]> {
-        let d = self.length(i, j)?;
-        let pk = apex(d, self.length(i, k)?, self.length(j, k)?, 1.0);
-        let pl = apex(d, self.length(i, l)?, self.length(j, l)?, -1.0);
-        Some([[0.0, 0.0], [d, 0.0], pk, pl])
-    }
-
-    /// The quad of a flippable edge `i`–`j`: the ends k (on the side of i → j) and l of the other
-    /// diagonal and the quad's layout ([`Mesh::layout`]); `None` when that diagonal is an edge
-    /// already or the quad is not strictly convex.
-    fn flippable(&self, i: usize, j: usize) -> Option<(usize, usize, [[f64; 2]; 4])> {
-        let (k, l) = (self.opposite(i, j)?, self.opposite(j, i)?);
-        if k == l || self.slot.contains_key(&undirected(k, l)) {
+        if m.len.iter().any(|&d| d.is_nan() || d <= 0.0) {
             return None;
         }
-        let q = self.layout(i, j, k, l)?;
+        m.halves = open.into_iter().map(|h| (h.len() == 2).then(|| [h[0], h[1]])).collect::<Option<_>>()?;
+        for &(i, j) in &m.ends {
+            *m.pairs.entry(undirected(i, j)).or_insert(0) += 1;
+        }
+        (m.seam_slot.iter().all(Option::is_some)).then_some(m)
+    }
+
+    /// The mesh whose flips may (`true`) or may not join two vertices that an edge joins already.
+    ///
+    /// Two edges between the same vertices are two straight segments of the metric, and Bobenko
+    /// & Izmestiev's flips may need them: with one edge per pair the embedding stalled, its flips
+    /// refused thousands of times, on a triangle with 1 mm corners glued to a circle at the even
+    /// sixteenths and on 8 of the survey's congruent gluings. Allowed from the start, though, they
+    /// led the same triangle at the odd sixteenths, which converged with one edge per pair, to a
+    /// continuation that stalls at curvature 6e-2; [`super::crossing`] tries one edge per pair
+    /// first.
+    pub(crate) fn multi(mut self, multi: bool) -> Mesh {
+        self.multi = multi;
+        self
+    }
+
+    /// How many flips were refused because an edge joined their new diagonal's ends already.
+    pub(crate) fn refused(&self) -> usize {
+        self.refused.get()
+    }
+
+    /// The number of edges.
+    pub(crate) fn edge_count(&self) -> usize {
+        self.ends.len()
+    }
+
+    /// The length of edge slot `e`.
+    pub(crate) fn len(&self, e: usize) -> f64 {
+        self.len[e]
+    }
+
+    /// The lengths of triangle `ti`'s sides t0 → t1, t1 → t2, t2 → t0.
+    pub(crate) fn side_lengths(&self, ti: usize) -> [f64; 3] {
+        self.side[ti].map(|e| self.len[e])
+    }
+
+    /// The other side of edge slot `side[ti][a]`: (triangle, its side index).
+    pub(crate) fn across(&self, ti: usize, a: usize) -> (usize, usize) {
+        let h = self.halves[self.side[ti][a]];
+        if h[0] == (ti, a) { h[1] } else { h[0] }
+    }
+
+    /// Edge slot `e`'s two sides, as (triangle, a).
+    pub(crate) fn halves(&self, e: usize) -> [(usize, usize); 2] {
+        self.halves[e]
+    }
+
+    /// The seam edge s → s + 1 that edge slot `e` is, if any.
+    pub(crate) fn seam_of(&self, e: usize) -> Option<usize> {
+        let (i, j) = self.ends[e];
+        [i, j].into_iter().find(|&s| self.seam_slot[s] == Some(e))
+    }
+
+    /// The quad of edge slot `e`: (t1, a1) with side i → j, (t2, a2) with side j → i, and the
+    /// vertices i, j, k (opposite in t1), l (opposite in t2).
+    fn quad(&self, e: usize) -> ((usize, usize), (usize, usize), [usize; 4]) {
+        let [(t1, a1), (t2, a2)] = self.halves[e];
+        let (u, v) = (self.tris[t1], self.tris[t2]);
+        ((t1, a1), (t2, a2), [u[a1], u[(a1 + 1) % 3], u[(a1 + 2) % 3], v[(a2 + 2) % 3]])
+    }
+
+    /// The flip of edge slot `e` as [`Mesh::flip`] would do it, without doing it; `None` when
+    /// the quad is not strictly convex or would put a vertex twice in a triangle.
+    pub(crate) fn flip_preview(&self, e: usize) -> Option<Preview> {
+        let ((t1, a1), (t2, a2), [i, j, k, l]) = self.quad(e);
+        if k == l || t1 == t2 {
+            return None;
+        }
+        if !self.multi && self.pairs.get(&undirected(k, l)).is_some_and(|&c| c > 0) {
+            self.refused.set(self.refused.get() + 1);
+            return None;
+        }
+        let d = self.len[e];
+        let (s1, s2) = (self.side[t1], self.side[t2]);
+        // t1: i → j (e), j → k, k → i; t2: j → i (e), i → l, l → j.
+        let (jk, ki, il, lj) = (self.len[s1[(a1 + 1) % 3]], self.len[s1[(a1 + 2) % 3]], self.len[s2[(a2 + 1) % 3]], self.len[s2[(a2 + 2) % 3]]);
+        let pk = apex(d, ki, jk, 1.0);
+        let pl = apex(d, il, lj, -1.0);
+        let q = [[0.0, 0.0], [d, 0.0], pk, pl];
         let size2 = q.iter().map(|p| p[0] * p[0] + p[1] * p[1]).fold(0.0, f64::max);
         let eps = 1e-12 * size2;
         if orient(q[2], q[0], q[3]) <= eps || orient(q[3], q[1], q[2]) <= eps {
             return None;
         }
-        Some((k, l, q))
+        Some(Preview { i, j, k, l, d: (pk[0] - pl[0]).hypot(pk[1] - pl[1]), sides: [ki, il, lj, jk] })
     }
 
-    /// The flip of edge `i`–`j` as [`Mesh::flip`] would do it, without doing it: the new
-    /// diagonal's ends k (on the side of i → j) and l, and its length; `None` when it cannot.
-    pub(crate) fn flip_preview(&self, i: usize, j: usize) -> Option<(usize, usize, f64)> {
-        let (k, l, q) = self.flippable(i, j)?;
-        Some((k, l, (q[2][0] - q[3][0]).hypot(q[2][1] - q[3][1])))
-    }
-
-    /// Replaces edge `i`–`j` by the other diagonal of its quad, with the length of the quad's
-    /// layout, when the quad is strictly convex and that diagonal is not an edge already; the
-    /// seam paths through the quad follow. Returns whether it flipped.
-    pub(crate) fn flip(&mut self, i: usize, j: usize) -> bool {
-        let (Some(t1), Some(t2)) = (self.triangle(i, j), self.triangle(j, i)) else { return false };
-        let Some((k, l, q)) = self.flippable(i, j) else { return false };
-        let d = (q[2][0] - q[3][0]).hypot(q[2][1] - q[3][1]);
+    /// Replaces edge slot `e` by the other diagonal of its quad, with the length of the quad's
+    /// layout (i at the origin, j on the positive x axis, k above, l below), when
+    /// [`Mesh::flip_preview`] allows it; the seam paths through the quad follow. Returns whether
+    /// it flipped.
+    pub(crate) fn flip(&mut self, e: usize) -> bool {
+        let Some(pv) = self.flip_preview(e) else { return false };
+        let ((t1, a1), (t2, a2), [i, j, k, l]) = self.quad(e);
+        let d0 = self.len[e];
+        let q = [[0.0, 0.0], [d0, 0.0], apex(d0, pv.sides[0], pv.sides[3], 1.0), apex(d0, pv.sides[1], pv.sides[2], -1.0)];
         let quad = [i, j, k, l];
         let at = |v: usize| quad.iter().position(|&w| w == v).map(|a| q[a]);
         let locate = |p: PathPoint| -> Option<[f64; 2]> {
@@ -250,17 +320,18 @@ impl Mesh {
                 PathPoint::On(c) => Some(lerp2(at(c.u)?, at(c.v)?, c.f)),
             }
         };
+        let (s1, s2) = (self.side[t1], self.side[t2]);
         let n = self.n;
         // Each path's stretch through the quad (from where it enters to where it leaves, across
-        // i–j or inside one of the two triangles) is one straight segment in the layout: it now
+        // e or inside one of the two triangles) is one straight segment in the layout: it now
         // crosses k–l there or nothing.
-        let closure = |p: PathPoint, t: [usize; 3]| match p {
+        let closure = |p: PathPoint, t: [usize; 3], s: [usize; 3]| match p {
             PathPoint::Vertex(v) => t.contains(&v),
-            PathPoint::On(c) => t.contains(&c.u) && t.contains(&c.v),
+            PathPoint::On(c) => s.contains(&c.e),
         };
-        let on_diagonal = |p: PathPoint| matches!(p, PathPoint::On(c) if undirected(c.u, c.v) == undirected(i, j));
+        let on_diagonal = |p: PathPoint| matches!(p, PathPoint::On(c) if c.e == e);
         let (tri1, tri2) = ([i, j, k], [j, i, l]);
-        let inside = |a: PathPoint, b: PathPoint| (closure(a, tri1) && closure(b, tri1)) || (closure(a, tri2) && closure(b, tri2));
+        let inside = |a: PathPoint, b: PathPoint| (closure(a, tri1, s1) && closure(b, tri1, s1)) || (closure(a, tri2, s2) && closure(b, tri2, s2));
         let mut rewritten: Vec<(usize, Vec<Crossing>)> = Vec::new();
         for (s, path) in self.paths.iter().enumerate() {
             if path.is_empty() {
@@ -288,39 +359,56 @@ impl Mesh {
                 }
                 let (Some(p0), Some(p1)) = (locate(pts[m]), locate(pts[b])) else { return false };
                 if let Some(f) = crossing_fraction(p0, p1, q[2], q[3]) {
-                    out.push(PathPoint::On(Crossing { u: k, v: l, f }));
+                    out.push(PathPoint::On(Crossing { e, u: k, v: l, f }));
                 }
                 out.push(pts[b]);
                 changed = true;
                 m = b;
             }
             if changed {
-                let crossings = out[1..out.len() - 1].iter().filter_map(|p| if let PathPoint::On(c) = p { Some(*c) } else { None }).collect();
+                let crossings: Vec<Crossing> = out[1..out.len() - 1].iter().filter_map(|p| if let PathPoint::On(c) = p { Some(*c) } else { None }).collect();
+                // A path that crosses nothing now runs along the new diagonal, from k to l.
+                if crossings.is_empty() && undirected(k, l) != undirected(s, (s + 1) % n) {
+                    return false;
+                }
                 rewritten.push((s, crossings));
             }
         }
-        // A seam edge that was an edge of the mesh is now crossed by k–l.
+        // A seam edge that was this edge is now crossed by k–l.
         let mut seam = None;
-        if self.seam_is_edge(i, j) {
-            let s = if (i + 1) % n == j { i } else { j };
-            let Some(f) = crossing_fraction(q[if s == i { 0 } else { 1 }], q[if s == i { 1 } else { 0 }], q[2], q[3]) else { return false };
-            seam = Some((s, Crossing { u: k, v: l, f }));
+        if let Some(s) = self.seam_of(e) {
+            let (from, to) = if s == i { (q[0], q[1]) } else { (q[1], q[0]) };
+            let Some(f) = crossing_fraction(from, to, q[2], q[3]) else { return false };
+            seam = Some((s, Crossing { e, u: k, v: l, f }));
         }
-        let Some(slot) = self.slot.remove(&undirected(i, j)) else { return false };
-        self.slot.insert(undirected(k, l), slot);
-        self.ends[slot] = (k, l);
-        self.len[slot] = d;
-        for (a, b) in [(i, j), (j, k), (k, i), (j, i), (i, l), (l, j)] {
-            self.at.remove(&pair_key(a, b));
-        }
+        // New triangles k, i, l (sides k → i, i → l, l → k) and l, j, k (l → j, j → k, k → l).
+        let (ki, jk, il, lj) = (s1[(a1 + 2) % 3], s1[(a1 + 1) % 3], s2[(a2 + 1) % 3], s2[(a2 + 2) % 3]);
         self.tris[t1] = [k, i, l];
         self.tris[t2] = [l, j, k];
-        self.index(t1);
-        self.index(t2);
+        self.side[t1] = [ki, il, e];
+        self.side[t2] = [lj, jk, e];
+        for (slot, was, now) in [(ki, (t1, (a1 + 2) % 3), (t1, 0)), (il, (t2, (a2 + 1) % 3), (t1, 1)), (lj, (t2, (a2 + 2) % 3), (t2, 0)), (jk, (t1, (a1 + 1) % 3), (t2, 1))] {
+            for h in &mut self.halves[slot] {
+                if *h == was {
+                    *h = now;
+                }
+            }
+        }
+        self.halves[e] = [(t1, 2), (t2, 2)];
+        if let Some(c) = self.pairs.get_mut(&undirected(i, j)) {
+            *c -= 1;
+        }
+        *self.pairs.entry(undirected(k, l)).or_insert(0) += 1;
+        self.ends[e] = (k, l);
+        self.len[e] = pv.d;
         for (s, crossings) in rewritten {
+            if crossings.is_empty() {
+                self.seam_slot[s] = Some(e);
+            }
             self.paths[s] = crossings;
         }
         if let Some((s, c)) = seam {
+            self.seam_slot[s] = None;
             self.paths[s].push(c);
         }
         true
@@ -336,12 +424,11 @@ impl Mesh {
         for _ in 0..self.n {
             let mut any = false;
             for ti in 0..self.tris.len() {
-                let t = self.tris[ti];
-                let Some(l) = self.triangle_lengths(t) else { continue };
-                // The angle at corner a + 2, across from edge a → a + 1.
+                let l = self.side_lengths(ti);
+                // The angle at corner a + 2, across from side a.
                 let straight = (0..3).find(|&a| cos_opposite(l[a], l[(a + 1) % 3], l[(a + 2) % 3]) < -1.0 + 1e-12);
                 if let Some(a) = straight {
-                    if self.flip(t[a], t[(a + 1) % 3]) {
+                    if self.flip(self.side[ti][a]) {
                         flips += 1;
                         any = true;
                     }
@@ -354,23 +441,15 @@ impl Mesh {
         flips
     }
 
-    /// The length equations of the edges ([`Bar`]s at their intrinsic lengths).
+    /// The length equations of the edges ([`Bar`]s at their intrinsic lengths), one per slot.
     pub(crate) fn bars(&self) -> Vec<Bar> {
         self.ends.iter().zip(&self.len).map(|(&(i, j), &d)| Bar { i, j, d }).collect()
     }
 
-    /// Every edge as (i, j), in the order of their slots ([`Mesh::slot_of`]).
+    /// Every edge slot's ends (i, j).
     pub(crate) fn edges(&self) -> &[(usize, usize)] {
         &self.ends
     }
-
-    /// The slot of edge `i`–`j`: its index in [`Mesh::edges`].
-    pub(crate) fn slot_of(&self, i: usize, j: usize) -> Option<usize> {
-        self.slot.get(&undirected(i, j)).copied()
-    }
-
-
-
 }
 
 #[cfg(test)]
@@ -397,10 +476,10 @@ mod tests {
     /// The angle around each vertex, from the edge lengths alone (law of cosines).
     fn angle_sums(m: &Mesh) -> Vec<f64> {
         let mut sum = vec![0.0; m.n];
-        for &t in &m.tris {
+        for (ti, &t) in m.tris.iter().enumerate() {
+            let l = m.side_lengths(ti);
             for a in 0..3 {
-                let (b, c) = (t[(a + 1) % 3], t[(a + 2) % 3]);
-                sum[t[a]] += cos_opposite(m.length(b, c).unwrap(), m.length(t[a], b).unwrap(), m.length(t[a], c).unwrap()).acos();
+                sum[t[a]] += cos_opposite(l[(a + 1) % 3], l[a], l[(a + 2) % 3]).acos();
             }
         }
         sum
@@ -409,25 +488,28 @@ mod tests {
     /// Intrinsic flips change the triangulation, never the metric: the angle around every vertex
     /// (its curvature) stays what it was, to round-off, after thousands of random flips, some of which
     /// cross the seam; every seam edge stays either an edge of the mesh or a path of crossings,
-    /// and every crossing lies on an edge of the mesh.
+    /// every crossing lies on an edge of the mesh, and every edge slot's two sides are sides of
+    /// triangles with its ends, also where two edges join the same two vertices.
     #[test]
     fn flips_keep_the_metric_and_track_the_seam() {
         let a = rounded_rectangle();
         let glue = Glue::new(&a, &a, 37.0).unwrap();
         let pieces = glue.sample(128);
-        let mut m = Mesh::from_chords(&pieces, &[triangulate(&pieces, 0).unwrap(), triangulate(&pieces, 1).unwrap()]).unwrap();
+        let mut m = Mesh::from_chords(&pieces, &[triangulate(&pieces, 0).unwrap(), triangulate(&pieces, 1).unwrap()]).unwrap().multi(true);
         let before = angle_sums(&m);
         let mut seed: u64 = 12345;
-        let (mut flips, mut crossed) = (0, 0);
+        let (mut flips, mut crossed, mut multi) = (0, 0, 0);
         for _ in 0..20_000 {
             seed ^= seed << 13;
             seed ^= seed >> 7;
             seed ^= seed << 17;
-            let (i, j) = m.edges()[(seed % m.edges().len() as u64) as usize];
-            if m.flip(i, j) {
+            if m.flip((seed % m.edge_count() as u64) as usize) {
                 flips += 1;
             }
             crossed = crossed.max(m.paths.iter().map(Vec::len).sum::<usize>());
+            let mut pairs: Vec<u64> = m.edges().iter().map(|&(i, j)| undirected(i, j)).collect();
+            pairs.sort_unstable();
+            multi = multi.max(pairs.windows(2).filter(|w| w[0] == w[1]).count());
         }
         let after = angle_sums(&m);
         let worst = before.iter().zip(&after).map(|(b, a)| (b - a).abs()).fold(0.0, f64::max);
@@ -439,11 +521,24 @@ mod tests {
         for s in 0..m.n {
             let s1 = (s + 1) % m.n;
             if m.paths[s].is_empty() {
-                assert!(m.length(s, s1).is_some(), "seam edge {s} is neither an edge nor a path");
+                let e = m.seam_slot[s].unwrap_or_else(|| panic!("seam edge {s} is neither an edge nor a path"));
+                let (i, j) = m.edges()[e];
+                assert!((i, j) == (s, s1) || (i, j) == (s1, s), "seam edge {s} is slot {e}, which joins {i} and {j}");
             }
             for c in &m.paths[s] {
-                assert!(m.length(c.u, c.v).is_some() && c.f > 0.0 && c.f < 1.0, "seam edge {s}: crossing {c:?} is not inside an edge of the mesh");
+                let (i, j) = m.edges()[c.e];
+                assert!(((i, j) == (c.u, c.v) || (i, j) == (c.v, c.u)) && c.f > 0.0 && c.f < 1.0, "seam edge {s}: crossing {c:?} is not inside an edge of the mesh");
             }
         }
+        // Every slot's two sides are sides of triangles that name it, with the slot's ends.
+        for e in 0..m.edge_count() {
+            for (ti, a) in m.halves(e) {
+                let t = m.tris[ti];
+                let (i, j) = m.edges()[e];
+                assert_eq!(m.side[ti][a], e, "slot {e}: side {a} of triangle {ti} is slot {}", m.side[ti][a]);
+                assert!([t[a], t[(a + 1) % 3]] == [i, j] || [t[a], t[(a + 1) % 3]] == [j, i], "slot {e} joins {i} and {j}, triangle {ti}'s side {a} {t:?}");
+            }
+        }
+        assert!(multi > 0, "wanted some vertex pairs joined by two edges on the way, got none");
     }
 }

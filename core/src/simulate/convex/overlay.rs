@@ -51,9 +51,9 @@ struct Part {
     piece: Option<usize>,
 }
 
-/// A point of a seam path as [`cut`] walks it: the mesh vertex it is (`Some(v)`) or the mesh edge
-/// it crosses (`Some((u, v))`), and its index among the new seam points.
-type PathStop = (Option<usize>, Option<(usize, usize)>, usize);
+/// A point of a seam path as [`cut`] walks it: the mesh vertex it is (`Some(v)`) or the edge slot
+/// it crosses (`Some(e)`), and its index among the new seam points.
+type PathStop = (Option<usize>, Option<usize>, usize);
 
 /// Whether `a` → `b` is an edge of `cycle` in that direction.
 fn has_edge(cycle: &[usize], a: usize, b: usize) -> bool {
@@ -71,8 +71,8 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
     let mut pts: [Vec<[f64; 2]>; 2] = [Vec::new(), Vec::new()];
     let mut xs: Vec<V3> = Vec::new();
     let mut sample = vec![0usize; n];
-    // (mesh edge key, fraction from its smaller vertex, new index), and each path's new indices.
-    let mut on_edge: Vec<(u64, f64, usize)> = Vec::new();
+    // (edge slot, fraction from its first end, new index), and each path's new indices.
+    let mut on_edge: Vec<(usize, f64, usize)> = Vec::new();
     let mut crossing_index: Vec<Vec<usize>> = vec![Vec::new(); n];
     for s in 0..n {
         let s1 = (s + 1) % n;
@@ -99,28 +99,29 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
             }
             let idx = xs.len();
             xs.push(at[m]);
-            let f = if c.u < c.v { c.f } else { 1.0 - c.f };
-            on_edge.push((crate::order::pair_key(c.u.min(c.v), c.u.max(c.v)), f, idx));
+            let f = if mesh.edges()[c.e].0 == c.u { c.f } else { 1.0 - c.f };
+            on_edge.push((c.e, f, idx));
             crossing_index[s].push(idx);
         }
     }
     let nm = xs.len();
     let new = |v: usize| sample[v];
     // Each triangle's boundary, with the crossings on its edges in order.
-    let crossings_on = |a: usize, b: usize| -> Vec<usize> {
-        let key = crate::order::pair_key(a.min(b), a.max(b));
-        let mut c: Vec<(f64, usize)> = on_edge.iter().filter(|e| e.0 == key).map(|e| (if a < b { e.1 } else { 1.0 - e.1 }, e.2)).collect();
+    let crossings_on = |e: usize, a: usize| -> Vec<usize> {
+        let forward = mesh.edges()[e].0 == a;
+        let mut c: Vec<(f64, usize)> = on_edge.iter().filter(|o| o.0 == e).map(|o| (if forward { o.1 } else { 1.0 - o.1 }, o.2)).collect();
         c.sort_by(|p, q| p.0.total_cmp(&q.0));
         c.into_iter().map(|e| e.1).collect()
     };
     let mut parts: Vec<Vec<Part>> = mesh
         .tris
         .iter()
-        .map(|t| {
+        .enumerate()
+        .map(|(ti, t)| {
             let mut cycle = Vec::new();
-            for a in 0..3 {
-                cycle.push(new(t[a]));
-                cycle.extend(crossings_on(t[a], t[(a + 1) % 3]));
+            for (&v, &e) in t.iter().zip(&mesh.side[ti]) {
+                cycle.push(new(v));
+                cycle.extend(crossings_on(e, v));
             }
             vec![Part { cycle, piece: None }]
         })
@@ -133,7 +134,7 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
         let s1 = (s + 1) % n;
         let mut points: Vec<PathStop> = vec![(Some(s), None, new(s))];
         for (c, &idx) in path.iter().zip(indices) {
-            points.push((None, Some((c.u, c.v)), idx));
+            points.push((None, Some(c.e), idx));
         }
         points.push((Some(s1), None, new(s1)));
         for w in points.windows(2) {
@@ -165,10 +166,9 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
     // Whole triangles: the piece of a seam edge they hold, else that of a neighbour across an
     // edge inside a piece.
     for (ti, t) in mesh.tris.iter().enumerate() {
-        for a in 0..3 {
-            let (u, v) = (t[a], t[(a + 1) % 3]);
-            if parts[ti].len() == 1 && parts[ti][0].piece.is_none() && mesh.seam_is_edge(u, v) {
-                parts[ti][0].piece = Some(if (u + 1) % n == v { 0 } else { 1 });
+        for (&v, &e) in t.iter().zip(&mesh.side[ti]) {
+            if let (true, Some(s)) = (parts[ti].len() == 1 && parts[ti][0].piece.is_none(), mesh.seam_of(e)) {
+                parts[ti][0].piece = Some(if v == s { 0 } else { 1 });
             }
         }
     }
@@ -183,10 +183,10 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
             let t = mesh.tris[ti];
             for a in 0..3 {
                 let (u, v) = (t[a], t[(a + 1) % 3]);
-                if mesh.seam_is_edge(u, v) {
+                if mesh.seam_of(mesh.side[ti][a]).is_some() {
                     continue;
                 }
-                let Some(tj) = mesh.triangle(v, u) else { continue };
+                let (tj, _) = mesh.across(ti, a);
                 let (nu, nv) = (new(u), new(v));
                 if let Some(p) = parts[tj].iter().find(|part| has_edge(&part.cycle, nv, nu)).and_then(|part| part.piece) {
                     parts[ti][0].piece = Some(p);
@@ -227,15 +227,9 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
 }
 
 /// The triangle of `mesh` that holds two consecutive points of a seam path, each a vertex
-/// (`Some(v)`) or a crossing of an edge (`Some((u, v))`).
-fn triangle_of(mesh: &Mesh, pv: Option<usize>, pe: Option<(usize, usize)>, qv: Option<usize>, qe: Option<(usize, usize)>) -> Option<usize> {
-    let holds = |ti: usize, v: Option<usize>, e: Option<(usize, usize)>| {
-        let t = mesh.tris[ti];
-        v.is_none_or(|v| t.contains(&v)) && e.is_none_or(|(a, b)| t.contains(&a) && t.contains(&b))
-    };
+/// (`Some(v)`) or a crossing of an edge slot (`Some(e)`).
+fn triangle_of(mesh: &Mesh, pv: Option<usize>, pe: Option<usize>, qv: Option<usize>, qe: Option<usize>) -> Option<usize> {
+    let holds = |ti: usize, v: Option<usize>, e: Option<usize>| v.is_none_or(|v| mesh.tris[ti].contains(&v)) && e.is_none_or(|e| mesh.side[ti].contains(&e));
     let edge = pe.or(qe)?;
-    [mesh.triangle(edge.0, edge.1), mesh.triangle(edge.1, edge.0)]
-        .into_iter()
-        .flatten()
-        .find(|&ti| holds(ti, pv, pe) && holds(ti, qv, qe))
+    mesh.halves(edge).into_iter().map(|h| h.0).find(|&ti| holds(ti, pv, pe) && holds(ti, qv, qe))
 }
