@@ -29,17 +29,22 @@ pub(crate) fn bars(pieces: &SeamPieces, tri: &[Triangulation; 2]) -> Vec<Bar> {
     let mut out = Vec::with_capacity(3 * n);
     for (p, t) in tri.iter().enumerate() {
         for (i, j) in t.edges() {
-            let seam = metric::is_seam(n, i, j);
-            if seam && p == 1 {
+            if metric::is_seam(n, i, j) && p == 1 {
                 continue;
             }
-            let d = if seam { 0.5 * (pieces.chord(0, i, j) + pieces.chord(1, i, j)) } else { pieces.chord(p, i, j) };
+            let d = bar_length(pieces, p, i, j);
             if d > 0.0 {
                 out.push(Bar { i, j, d });
             }
         }
     }
     out
+}
+
+/// The length of edge i–j of piece `p` in the length equations: a chord's flat length, a seam
+/// edge's mean of A's and B's chords (see [`bars`]).
+pub(crate) fn bar_length(pieces: &SeamPieces, p: usize, i: usize, j: usize) -> f64 {
+    if metric::is_seam(pieces.n, i, j) { 0.5 * (pieces.chord(0, i, j) + pieces.chord(1, i, j)) } else { pieces.chord(p, i, j) }
 }
 
 /// Sum of squared relative residuals `(|x_i − x_j| / d − 1)²`.

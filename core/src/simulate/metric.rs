@@ -44,6 +44,12 @@ pub fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
     (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 }
 
+/// The angle at `a` between `a` → `b` and `a` → `c`, in [0, π].
+pub fn angle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]]);
+    (u[0] * v[1] - u[1] * v[0]).abs().atan2(u[0] * v[0] + u[1] * v[1])
+}
+
 /// Relative margin for "strictly" positive areas: a triangle counts as degenerate when its
 /// doubled area is below this times the squared polygon size.
 const AREA_EPS: f64 = 1e-12;

@@ -66,8 +66,8 @@ pub(crate) const POLISHED_STRAIN: f64 = 1e-5;
 
 /// The D-form of the sample polygons `pieces` (both convex) by the steps of the module docs:
 /// the pieces with a seam vertex added where a crease crosses the seam, the positions and the
-/// triangulations, when the answer is isometric to the length equations ([`POLISHED_STRAIN`]) and
-/// good ([`is_good`], [`exact_if_polyhedral`], [`convex_as_a_whole`]); else `None`, also
+/// triangulations, when the answer is isometric to the length equations ([`POLISHED_STRAIN`]),
+/// convex by its sound faces ([`sound`]) and [`exact_if_polyhedral`]; else `None`, also
 /// beyond [`MAX_SEAM`] seam vertices. The Newton and LM steps are added to `steps`, and stop at
 /// `cap` in all (the user's `max_iterations`).
 pub(crate) fn solve(pieces: &SeamPieces, cap: usize, steps: &mut (usize, usize)) -> Option<(SeamPieces, Vec<V3>, [Triangulation; 2])> {

@@ -24,7 +24,7 @@
 //! a circle and on congruent rectangles, and the embedding stalled; [`Mesh::multi`] says when a
 //! flip may add a second edge.
 
-use super::super::isometry::Bar;
+use super::super::isometry::{bar_length, Bar};
 use super::super::metric::{self, orient, KeyMap, Triangulation};
 use super::super::seam::SeamPieces;
 use crate::order::pair_key;
@@ -71,15 +71,11 @@ pub(crate) struct Mesh {
 /// straight one. See [`Mesh::from_chords`] for why that matters.
 fn delaunay(t: &mut Triangulation, pts: &[[f64; 2]]) {
     let s2 = metric::size2(pts);
-    let angle = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
-        let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]]);
-        (u[0] * v[1] - u[1] * v[0]).abs().atan2(u[0] * v[0] + u[1] * v[1])
-    };
     for _ in 0..4 * t.len() {
         let mut any = false;
         for (i, j) in t.chords() {
             let (Some(k), Some(l)) = (t.opposite(i, j), t.opposite(j, i)) else { continue };
-            if angle(pts[k], pts[i], pts[j]) + angle(pts[l], pts[i], pts[j]) > std::f64::consts::PI + 1e-12 && t.flip(i, j, pts, s2) {
+            if metric::angle(pts[k], pts[i], pts[j]) + metric::angle(pts[l], pts[i], pts[j]) > std::f64::consts::PI + 1e-12 && t.flip(i, j, pts, s2) {
                 any = true;
             }
         }
@@ -102,8 +98,9 @@ fn undirected(i: usize, j: usize) -> u64 {
 
 /// The flip of an edge as [`Mesh::flip_preview`] sees it: the edge's ends `i` and `j` (in the
 /// order of its first side), the new diagonal's ends `k` (on the side of i → j) and `l` and its
-/// length `d`, and the lengths of the quad's sides k → i, i → l, l → j and j → k (the sides of
-/// the new triangles k, i, l and l, j, k).
+/// length `d`, the lengths of the quad's sides k → i, i → l, l → j and j → k (the sides of the
+/// new triangles k, i, l and l, j, k), and the quad laid out in the plane (i, j, k, l: i at the
+/// origin, j on the positive x axis, k above, l below).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Preview {
     pub(crate) i: usize,
@@ -112,6 +109,7 @@ pub(crate) struct Preview {
     pub(crate) l: usize,
     pub(crate) d: f64,
     pub(crate) sides: [f64; 4],
+    layout: [[f64; 2]; 4],
 }
 
 /// The apex of a triangle on base (0, 0)–(`base`, 0) with sides `a` (from the origin) and `b`,
@@ -191,9 +189,8 @@ impl Mesh {
                     let (i, j) = (tr[a], tr[(a + 1) % 3]);
                     let kind = if metric::is_seam(n, i, j) { 2 } else { p };
                     let e = *slots[kind].entry(undirected(i, j)).or_insert_with(|| {
-                        let d = if kind == 2 { 0.5 * (pieces.chord(0, i, j) + pieces.chord(1, i, j)) } else { pieces.chord(p, i, j) };
                         m.ends.push((i, j));
-                        m.len.push(d);
+                        m.len.push(bar_length(pieces, p, i, j));
                         open.push(Vec::new());
                         m.ends.len() - 1
                     });
@@ -300,18 +297,16 @@ impl Mesh {
         if orient(q[2], q[0], q[3]) <= eps || orient(q[3], q[1], q[2]) <= eps {
             return None;
         }
-        Some(Preview { i, j, k, l, d: (pk[0] - pl[0]).hypot(pk[1] - pl[1]), sides: [ki, il, lj, jk] })
+        Some(Preview { i, j, k, l, d: (pk[0] - pl[0]).hypot(pk[1] - pl[1]), sides: [ki, il, lj, jk], layout: q })
     }
 
     /// Replaces edge slot `e` by the other diagonal of its quad, with the length of the quad's
-    /// layout (i at the origin, j on the positive x axis, k above, l below), when
-    /// [`Mesh::flip_preview`] allows it; the seam paths through the quad follow. Returns whether
-    /// it flipped.
+    /// layout ([`Preview`]), when [`Mesh::flip_preview`] allows it; the seam paths through the
+    /// quad follow. Returns whether it flipped.
     pub(crate) fn flip(&mut self, e: usize) -> bool {
         let Some(pv) = self.flip_preview(e) else { return false };
         let ((t1, a1), (t2, a2), [i, j, k, l]) = self.quad(e);
-        let d0 = self.len[e];
-        let q = [[0.0, 0.0], [d0, 0.0], apex(d0, pv.sides[0], pv.sides[3], 1.0), apex(d0, pv.sides[1], pv.sides[2], -1.0)];
+        let q = pv.layout;
         let quad = [i, j, k, l];
         let at = |v: usize| quad.iter().position(|&w| w == v).map(|a| q[a]);
         let locate = |p: PathPoint| -> Option<[f64; 2]> {

@@ -81,11 +81,7 @@ pub(crate) fn flip_pass(
 
 /// The largest angle of the flat triangle `a`, `b`, `c`.
 fn largest_angle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
-    let at = |o: [f64; 2], u: [f64; 2], v: [f64; 2]| {
-        let (du, dv) = ([u[0] - o[0], u[1] - o[1]], [v[0] - o[0], v[1] - o[1]]);
-        (du[0] * dv[1] - du[1] * dv[0]).abs().atan2(du[0] * dv[0] + du[1] * dv[1])
-    };
-    at(a, b, c).max(at(b, c, a)).max(at(c, a, b))
+    metric::angle(a, b, c).max(metric::angle(b, c, a)).max(metric::angle(c, a, b))
 }
 
 /// Largest angle a flip of [`Chords::without_caps`] may make in a new flat triangle. A cap (an
