@@ -15,9 +15,14 @@ from dformer_mesh import write_obj, write_stl
 from dformer_pieces import describe, read_pieces
 
 
-def shortfall_text(stats):
+def shortfall_text(stats, resolution):
     """What an unconverged answer misses (`stats.shortfall` of the core's `simulate`), in words."""
     why = stats.get("shortfall")
+    if why == "sampling":
+        more = min(2 * resolution, 2048)
+        return (f"Approximate shape: the outline turns too tightly somewhere for {resolution} seam vertices, which alone "
+                f"force edges up to {stats['strainFloor']:.3%} off their flat lengths, more than the 0.1% a true D-form "
+                f"allows. Raise Seam vertices (try {more}) or round that curve a little more.")
     if why == "fold":
         bend = round(math.degrees(stats["maxBend"]))
         return (f"Approximate shape: the pieces keep their flat lengths, but one is creased by {bend}° inside it, "
@@ -38,7 +43,7 @@ class Export3D(DformerEffect):
         super().add_arguments(pars)
         pars.add_argument("--file", default="", help="OBJ or STL file to write")
         pars.add_argument("--offset", type=float, default=0.0, help="Shift of B's start along its edge (like Connectors' start on B)")
-        pars.add_argument("--resolution", type=int, default=128, help="Seam vertices")
+        pars.add_argument("--resolution", type=int, default=256, help="Seam vertices")
 
     def target_file(self):
         name = os.path.expanduser(self.options.file.strip())
@@ -71,7 +76,7 @@ class Export3D(DformerEffect):
             f"Max edge strain {stats['maxStrain']:.3%}, seam gap {stats['seamGap'] * k:.3g} {unit}.",
         ]
         if not stats["converged"]:
-            lines.append(shortfall_text(stats))
+            lines.append(shortfall_text(stats, self.options.resolution))
 
         def write():
             try:

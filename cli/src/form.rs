@@ -147,7 +147,7 @@ pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<(), String> {
         t += &format!("area       {} {u}²\n", g(st.area));
         t += &format!("extents    height {} {u} × width {} {u} × depth {} {u}\n", g(f.height), g(f.width), g(f.depth));
         t += &format!("strain     {}% at most\n", g(100.0 * st.max_strain));
-        t += &format!("converged  {}\n", verdict(st));
+        t += &format!("converged  {}\n", verdict(st, a.resolution));
         t
     };
     // Everything computed first, then written.
@@ -233,10 +233,19 @@ fn sweep(file: &SvgFile, ids: &[String], a: &FormArgs, n: usize) -> Result<(), S
     Ok(())
 }
 
-/// The `converged` line: yes, or what the approximate shape misses (`stats.shortfall`).
-fn verdict(st: &StatsDto) -> String {
+/// The `converged` line: yes, or what the approximate shape misses (`stats.shortfall`);
+/// `resolution` is the one asked for (`None`: the core's default).
+fn verdict(st: &StatsDto, resolution: Option<f64>) -> String {
     match (st.converged, st.shortfall.as_deref()) {
         (true, _) => "yes".into(),
+        (false, Some("sampling")) => {
+            let n = resolution.unwrap_or(dformer::simulate::options::DEFAULT_RESOLUTION as f64);
+            format!(
+                "no: an approximate shape; the outline turns too tightly for {} seam vertices, which alone force \
+                 edges up to {}% off their flat lengths (0.1% allowed); try --resolution {}, or round that curve a little more",
+                g(n), g(100.0 * st.strain_floor), g((2.0 * n).min(dformer::simulate::options::MAX_RESOLUTION as f64))
+            )
+        }
         (false, Some("fold")) => format!(
             "no: an approximate shape; the pieces keep their flat lengths, but one is creased by {}° inside it \
              (a shallower inward bay usually avoids it; rounding its corners does not)",

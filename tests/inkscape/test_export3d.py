@@ -154,3 +154,32 @@ class Export3dCreased(unittest.TestCase):
         self.assertLessEqual(abs(int(found.group(1)) - bend), 1.0, f"wanted the mesh's {bend:.1f}°, got: {message}")
         self.assertNotIn("stretch", message)
 
+
+
+class Export3dSampling(unittest.TestCase):
+    """A rectangle with 1 mm corners on a circle was exported without a word at 64 seam
+    vertices, its edges 5e-3 off their flat lengths: so few samples cannot follow both the
+    corners and the circle. The message now says so and names a resolution to try; at the
+    default (256) the same pair converges."""
+
+    def export(self, *args):
+        path = os.path.join(tempfile.mkdtemp(prefix="dformer-3d-"), "r.obj")
+        err = io.StringIO()
+        with redirect_stderr(err):
+            Export3D().run([os.path.join(DATA, "rounded_rect_circle_mm.svg"), "--id=A", "--id=B", f"--file={path}", *args], output=io.BytesIO())
+        return err.getvalue()
+
+    def test_a_tight_corner_at_few_seam_vertices_asks_for_more(self):
+        message = self.export("--resolution=64")
+        strain = float(re.search(r"Max edge strain ([\d.]+)%", message).group(1)) / 100
+        self.assertGreater(strain, 1e-3, f"precondition: edges over 1e-3 off: {message}")
+        self.assertIn("too tightly somewhere for 64 seam vertices", message)
+        self.assertIn("Raise Seam vertices (try 128)", message)
+        self.assertNotIn("stretch", message)
+
+    def test_at_the_default_resolution_the_same_pair_converges(self):
+        message = self.export()
+        strain = float(re.search(r"Max edge strain ([\d.]+)%", message).group(1)) / 100
+        self.assertLessEqual(strain, 1e-3, message)
+        self.assertNotIn("Approximate", message)
+        self.assertNotIn("did not converge", message)

@@ -115,4 +115,33 @@ test('3D tab: a form the solver cannot realize is clearly marked approximate; a 
   assert.equal(Math.max(...(await violetOverOrbit(rect.page))), 0, 'a realized form has no crease to draw');
   assert.doesNotMatch(await rect.page.textContent('#status'), /approximate/i);
   await rect.page.close();
+
+  // A 60 × 40 mm rectangle with 0.2 mm rounded corners + circle: at the preview's 256 seam
+  // points A's chords round each corner and the circle's do not, so a seam edge's two flat
+  // lengths differ by more than 1e-3 and no mesh on them keeps every length. It was called
+  // converged (edges 1.8e-3 off); the warning now says the samples are too coarse, with the
+  // floor computed here from the result's `flat` (a seam edge's length in each piece).
+  const tight = await open3d('tight-circle.svg', '<rect x="20" y="55" width="60" height="40" rx="0.2"/>');
+  const tightWarn = await tight.page.textContent('#warn3d');
+  assert.ok(await tight.page.locator('#warn3d').isVisible(), 'edges over 1e-3 off their flat lengths are not the real D-form');
+  assert.match(tightWarn, /turns too tightly/);
+  assert.doesNotMatch(tightWarn, /stretch/);
+  const floor = await tight.page.evaluate(() => {
+    const m = window.DF.app.mesh();
+    const lengths = new Map();
+    m.triangles.forEach((t, f) => t.forEach((v, k) => {
+      const w = t[(k + 1) % 3], key = Math.min(v, w) + ',' + Math.max(v, w);
+      const [p, q] = [m.flat[f][k], m.flat[f][(k + 1) % 3]];
+      (lengths.get(key) || lengths.set(key, []).get(key)).push([m.piece[f], Math.hypot(q[0] - p[0], q[1] - p[1])]);
+    }));
+    let worst = 0;
+    for (const [[pa, a], [pb, b]] of [...lengths.values()].filter((l) => l.length === 2)) {
+      if (pa !== pb) worst = Math.max(worst, Math.abs(a - b) / (a + b));
+    }
+    return worst;
+  });
+  assert.ok(floor > 1e-3, `precondition: seam edges whose two flat lengths differ by more than 1e-3, got ${floor}`);
+  const pct = tightWarn.match(/force edges up to ([\d.]+) %/);
+  assert.ok(pct && Math.abs(Number(pct[1]) - 100 * floor) <= 0.01, `wanted ${(100 * floor).toFixed(2)} %, got: ${tightWarn}`);
+  await tight.page.close();
 });

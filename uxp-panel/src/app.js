@@ -512,8 +512,9 @@
   /**
    * The solver may stop without the real D-form, and says why (stats.shortfall): the pieces would
    * have to stretch (near-square rectangles on a circle, spiky outlines), the sheets pass through
-   * each other, or both keep their flat shape but one is creased (an L or a drawn heart on a
-   * circle: the circle bends sharply along a line). Each gets its own plain words: a creased form
+   * each other, both keep their flat shape but one is creased (an L or a drawn heart on a
+   * circle: the circle bends sharply along a line), or the seam's samples are too coarse for a
+   * tight curve (A's and B's chords between two seam points differ by more than 1e-3). Each gets its own plain words: a creased form
    * is no stretched guess, and telling a student it "stretches up to 0 %" explained nothing. The
    * fold's advice is what the core's tests find (simulate_nonconvex.rs,
    * test_issue_14_a_shallower_bay_avoids_the_crease_that_rounded_corners_keep): an L whose notch
@@ -528,6 +529,12 @@
         (st.maxBend * 180 / Math.PI).toFixed(0) + '°, along a line inside it (drawn in violet, dashed where it is behind the surface), where real material creases. The real D-form will ' +
         'look different there: it may crease, or take a smoother shape the solver did not find. Making a deep inward bay ' +
         '(an L\'s notch, a heart\'s dip) shallower usually avoids it; rounding its corners does not.' + tail;
+    }
+    if (st.shortfall === 'sampling') {
+      return '⚠ Approximate preview: the outline turns too tightly somewhere (a corner rounded by a fraction of a millimetre) ' +
+        'for the preview\'s seam points, which alone force edges up to ' + (st.strainFloor * 100).toFixed(2) + ' % off their ' +
+        'flat lengths, more than the 0.1 % a true D-form allows. The shape is close to the real D-form but not exact; ' +
+        'rounding that corner a little more gives an exact preview.' + tail;
     }
     if (st.shortfall === 'unsettled') {
       return '⚠ Approximate preview: the solver stopped before this shape settled (after ' + st.iterations + ' steps). The real ' +

@@ -31,6 +31,11 @@ pub struct SimulateOptionsDto {
 pub struct StatsDto {
     pub max_strain: f64,
     pub mean_strain: f64,
+    /// The least `maxStrain` any mesh on these seam samples can have (see
+    /// [`crate::simulate::Stats::strain_floor`]); above 1e-3 no answer at this resolution can
+    /// be `converged` (`shortfall` `"sampling"`).
+    #[serde(default)]
+    pub strain_floor: f64,
     pub seam_gap: f64,
     pub area_error: f64,
     pub angle_defect_sum: f64,
@@ -44,7 +49,7 @@ pub struct StatsDto {
     pub ms: f64,
     /// Largest bend inside a piece, radians (see [`crate::simulate::Stats::max_bend`]).
     pub max_bend: f64,
-    /// `null` when converged, else why not: `"stretch"`, `"crossing"`, `"fold"` or
+    /// `null` when converged, else why not: `"sampling"`, `"stretch"`, `"crossing"`, `"fold"` or
     /// `"unsettled"` ([`crate::simulate::Shortfall`]).
     pub shortfall: Option<String>,
 }
@@ -54,6 +59,7 @@ impl From<&Stats> for StatsDto {
         StatsDto {
             max_strain: s.max_strain,
             mean_strain: s.mean_strain,
+            strain_floor: s.strain_floor,
             seam_gap: s.seam_gap,
             area_error: s.area_error,
             angle_defect_sum: s.angle_defect_sum,

@@ -98,6 +98,7 @@ pub fn simulation(pieces: &SeamPieces, mesh: &SheetMesh, shell: &Shell, x: &[V3]
     let stats = Stats {
         max_strain,
         mean_strain: if shell.edges.is_empty() { 0.0 } else { sum_strain / shell.edges.len() as f64 },
+        strain_floor: 0.0,
         seam_gap,
         area_error: if flat_area > 0.0 { (area - flat_area).abs() / flat_area } else { 0.0 },
         angle_defect_sum: (0..n).map(defect).sum(),
