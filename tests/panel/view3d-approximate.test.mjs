@@ -116,12 +116,12 @@ test('3D tab: a form the solver cannot realize is clearly marked approximate; a 
   assert.doesNotMatch(await rect.page.textContent('#status'), /approximate/i);
   await rect.page.close();
 
-  // A 60 × 40 mm rectangle with 0.2 mm rounded corners + circle: at the preview's 256 seam
+  // A 60 × 40 mm rectangle with 0.05 mm rounded corners + circle: at the preview's 256 seam
   // points A's chords round each corner and the circle's do not, so a seam edge's two flat
-  // lengths differ by more than 1e-3 and no mesh on them keeps every length. It was called
-  // converged (edges 1.8e-3 off); the warning now says the samples are too coarse, with the
-  // floor computed here from the result's `flat` (a seam edge's length in each piece).
-  const tight = await open3d('tight-circle.svg', '<rect x="20" y="55" width="60" height="40" rx="0.2"/>');
+  // lengths differ by more than 1e-3 and no mesh on them keeps every length (0.2 mm corners were
+  // called converged with edges 1.8e-3 off). The warning says the samples are too coarse, with
+  // the floor computed here from the result's `flat` (a seam edge's length in each piece).
+  const tight = await open3d('tight-circle.svg', '<rect x="20" y="55" width="60" height="40" rx="0.05"/>');
   const tightWarn = await tight.page.textContent('#warn3d');
   assert.ok(await tight.page.locator('#warn3d').isVisible(), 'edges over 1e-3 off their flat lengths are not the real D-form');
   assert.match(tightWarn, /turns too tightly/);

@@ -26,8 +26,16 @@ use kurbo::ParamCurveCurvature;
 pub const K: f64 = 24.0;
 
 /// Largest weight: a step at most this many times shorter than the even one (a cusp, whose
-/// curvature is unbounded, gets this much and no more).
-pub const W_MAX: f64 = 16.0;
+/// curvature is unbounded, gets this much and no more). A corner rounded at radius `r` on a
+/// seam of length `L` needs `w ≈ 6.5·L/(n·r)` for its chords to differ by under 1e-3 (the floor
+/// `(hκ)²/24` of a step `h = L/(n·w)`, `κ = 1/r`). At 16, 60 × 40 rectangles with corners rounded
+/// below 0.3 mm, glued to a circle at 256 seam vertices, were 1.8e-3 (r 0.2) to 2.6e-2 (r 0.05)
+/// off, or ended 10–180 % stretched; at 64 they converge from 0.08 mm up, and from 0.03 mm to
+/// 0.07 mm end within 5e-3 ("sampling"). The weight table's bins (`L/4096`) hold such a corner's
+/// few bins at the full weight, and the grading keeps the steps beside it gradual. Curvature
+/// that high is rare enough that the rest of the seam keeps its steps: of the survey's 768
+/// convex gluings 708 converge at 64, 707 at 16.
+pub const W_MAX: f64 = 64.0;
 
 /// Largest change of `ln w` per local seam step (at [`REFERENCE`] samples).
 pub const GRADING: f64 = 0.5;

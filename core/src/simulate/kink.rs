@@ -23,16 +23,19 @@
 use crate::arclen::{unit_tangent, ArcTable};
 use super::seam::CORNER_TURN;
 
-/// Curvature (times the perimeter) above which a turn is a kink: twice the tightest the seam
-/// density resolves ([`super::density::K`] · [`super::density::W_MAX`]).
-pub const KINK_KAPPA_L: f64 = 2.0 * super::density::K * super::density::W_MAX;
+/// Curvature (times the perimeter) above which a turn is a kink: `2·K·16`, twice the tightest
+/// the seam density resolved when kinks came in (its largest weight was 16). Left there when
+/// that weight went to 64 ([`super::density::W_MAX`]): kinks also need [`KINK_SHIFT`] and
+/// [`KINK_OFFSET`], and the rounded corners between the two thresholds are now resolved by the
+/// density instead of ending stretched.
+pub const KINK_KAPPA_L: f64 = 2.0 * super::density::K * 16.0;
 
 /// Largest deficit of a kink (both sides, relative to the perimeter): the seam's gluing moves
 /// by a kink's deficit ([`Walk`]), so a turn that would move it more is no kink but a rounding
 /// the seam's graded steps follow ([`super::density`]), as before kinks. 1e-4 is 0.1 mm on a
 /// metre of seam, a laser's kerf. The fitted heart's tip loses 2.7e-3 mm of 306 (8.9e-6), its
 /// dip 2.2e-3 (7.3e-6); a 90° corner rounded at 0.05 mm on a 200 mm rectangle 7.8e-3 (3.9e-5),
-/// where the graded steps, at most [`super::density::W_MAX`] times shorter than the even ones,
+/// where the graded steps, then at most 16 times shorter than the even ones,
 /// left 2 % between the chords beside it. A hairpin at the kinks' curvature (radius `L/768`)
 /// would lose 4e-3 of `L`.
 pub const KINK_SHIFT: f64 = 1e-4;
