@@ -2,7 +2,9 @@
 // meshed here with interior vertices, glued along the seam and relaxed by Evolver as
 // inextensible elastic sheets with a bending energy (bench/evolver/datafile.mjs says which
 // energies and why). Prints Evolver's volume, its max edge strain, whether its mesh
-// self-intersects, the volume of `simulate` (called through the contract, WASM) and the ratio.
+// self-intersects, the volume of `simulate` (called through the contract, WASM) and the ratio;
+// for the L with a circle (`crease` in pairs.mjs) also each piece's sharpest bend, both
+// solvers', which says whether the crease `simulate` reports is the sheet's own.
 //
 // Run: node bench/evolver.bench.mjs   (scripts/bench.sh installs Evolver and builds the WASM)
 // Env: DFORMER_PKG (package path), DFORMER_EVOLVER_SEAM (seam vertices, default 128),
@@ -14,7 +16,7 @@ import { pairs } from './evolver/pairs.mjs';
 import { glue } from './evolver/sheet.mjs';
 import { datafile, script } from './evolver/datafile.mjs';
 import { findEvolver, runEvolver } from './evolver/run.mjs';
-import { volume, maxStrain, maxBend, selfIntersections } from './evolver/check.mjs';
+import { volume, maxStrain, maxBend, maxBendPerPiece, selfIntersections } from './evolver/check.mjs';
 
 const exe = findEvolver();
 if (!exe) {
@@ -56,9 +58,9 @@ pairs().forEach((pair, index) => {
   console.log(`== ${pair.name} ==`);
   const sheet = glue(pair.pieces, pair.offset, SEAM);
   const R = sheet.perimeter / (2 * Math.PI);
-  const schedule = SCHEDULE.map((r) => (r * R * R) / sheet.h);
+  const schedule = (pair.schedule ?? SCHEDULE).map((r) => (r * R * R) / sheet.h);
   const { text } = datafile(sheet, { poisson: POISSON, kb: schedule[0], title: pair.name });
-  const run = runEvolver(exe, text, script(schedule, { steps: STEPS }), { timeoutMs: BUDGET * 1000 });
+  const run = runEvolver(exe, text, script(schedule, { steps: STEPS, cg: pair.cg ?? 0 }), { timeoutMs: BUDGET * 1000 });
   total += run.ms;
   if (run.timedOut) console.log(`  Surface Evolver stopped by the ${BUDGET} s budget after ${run.stages.length} of ${schedule.length} stages (DFORMER_EVOLVER_BUDGET raises it)`);
   const bad = [...run.corners].filter(([f, c]) => c.join() !== sheet.triangles[f - 1].map((i) => i + 1).join());
@@ -93,6 +95,14 @@ pairs().forEach((pair, index) => {
     line += `; Richardson 256/512/1024 ${exact.toFixed(1)}`;
   }
   console.log(line);
+  if (pair.crease) {
+    // Each piece's sharpest bend, Evolver's and ours, both from the meshes.
+    const [ea, eb] = maxBendPerPiece(x, sheet.triangles, sheet.piece);
+    const [oa, ob] = maxBendPerPiece(ours.vertices, ours.triangles, ours.piece);
+    const both = eb > 90 && ob > 90;
+    console.log(`  sharpest bend inside A / B: Evolver ${ea.toFixed(1)}° / ${eb.toFixed(1)}°, ours ${oa.toFixed(1)}° / ${ob.toFixed(1)}° (shortfall ${s.shortfall})`);
+    console.log(`  crease: ${both ? 'both fold the circle by more than 90°, beside the notch: the crease is the sheet\'s, not our solver\'s' : 'Evolver and ours disagree on whether the circle folds by more than 90°'}${ok ? '' : ' (Evolver not converged)'}`);
+  }
   const ratio = s.volume / vol;
   console.log(`  ratio ours / Evolver: ${ratio.toFixed(4)} (${((ratio - 1) * 100).toFixed(2)} %)${ok ? '' : ' — Evolver not converged'}`);
   if (exact) console.log(`  calibration: Evolver / exact convex volume ${(vol / exact).toFixed(5)} (${((vol / exact - 1) * 100).toFixed(3)} %; the issue's reference set-up reached 0.05 %)`);

@@ -28,20 +28,25 @@ export function maxStrain(vertices, triangles, flat) {
 
 /** Largest angle (degrees) between the normals of two facets of the same piece sharing an edge. */
 export function maxBend(vertices, triangles, piece) {
+  return Math.max(...maxBendPerPiece(vertices, triangles, piece));
+}
+
+/** [A's, B's]: the sharpest bend inside each piece, as [`maxBend`]. */
+export function maxBendPerPiece(vertices, triangles, piece) {
   const normal = triangles.map(([i, j, k]) => {
     const n = cross(sub(vertices[j], vertices[i]), sub(vertices[k], vertices[i]));
     const l = norm(n);
     return [n[0] / l, n[1] / l, n[2] / l];
   });
   const seen = new Map();
-  let m = 0;
+  const m = [0, 0];
   triangles.forEach((t, f) => {
     for (let q = 0; q < 3; q++) {
       const a = t[q], b = t[(q + 1) % 3], key = a < b ? `${a},${b}` : `${b},${a}`;
       const g = seen.get(key);
       if (g === undefined) { seen.set(key, f); continue; }
       if (piece[g] !== piece[f]) continue;
-      m = Math.max(m, (Math.acos(Math.max(-1, Math.min(1, dot(normal[f], normal[g])))) * 180) / Math.PI);
+      m[piece[f]] = Math.max(m[piece[f]], (Math.acos(Math.max(-1, Math.min(1, dot(normal[f], normal[g])))) * 180) / Math.PI);
     }
   });
   return m;

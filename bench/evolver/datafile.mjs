@@ -83,9 +83,10 @@ export function datafile(sheet, { poisson = 0.3, kb = 1, title = '' } = {}) {
  * have to bring the next one near its equilibrium) or `steps` steps are taken; print one line
  * per stage, after the vertices it ends with.
  */
-export function script(schedule, { steps = 30, tol = 1e-9, coarse = 1e-5 } = {}) {
+export function script(schedule, { steps = 30, tol = 1e-9, coarse = 1e-5, cg = 0 } = {}) {
   const lines = [
     'hessian_normal off',
+    ...(cg > 0 ? ['conj_grad on'] : []),
     'foreach facet ff do printf "F %d %d %d %d\\n", ff.id, ff.vertex[1].id, ff.vertex[2].id, ff.vertex[3].id',
   ];
   schedule.forEach((kb, i) => {
@@ -93,6 +94,12 @@ export function script(schedule, { steps = 30, tol = 1e-9, coarse = 1e-5 } = {})
     lines.push(
       `bend.modulus := ${num(kb)}`, // a datafile modulus is read once: set it at run time
       'recalc',
+      // With `cg`, conjugate gradient (Evolver's `g`) in blocks of 50 first, until a block
+      // changes the energy by less than 1e-6 of it or `cg` iterations are spent: on a thinner
+      // stage Newton alone can step into an index-1–3 saddle of a sheet far from it.
+      ...(cg > 0
+        ? ['olde := 1e300; it := 0', `while (abs(olde - total_energy) > 1e-6*abs(total_energy) and it < ${cg}) do { olde := total_energy; g 50; it := it + 50 }`]
+        : []),
       'olde := 1e300; it := 0',
       `while (abs(olde - total_energy) > ${num(stop)}*abs(total_energy) and it < ${steps}) do { olde := total_energy; hessian_seek; it := it + 1 }`,
       // Vertices after every stage, so a run stopped by its time budget still has the last stage.

@@ -28,6 +28,19 @@ export function polarPath(r, dr, n = 96) {
   return { closed: true, points };
 }
 
+/**
+ * A closed polygon as a path of straight cubic segments, handles on each side at 1/3 and 2/3,
+ * so that every vertex stays a sharp corner (its two handles point along different sides).
+ */
+export function polygonPath(vertices) {
+  const n = vertices.length;
+  const toward = (a, b) => [a[0] + (b[0] - a[0]) / 3, a[1] + (b[1] - a[1]) / 3];
+  return {
+    closed: true,
+    points: vertices.map((a, i) => ({ anchor: a, left: toward(a, vertices[(i + n - 1) % n]), right: toward(a, vertices[(i + 1) % n]) })),
+  };
+}
+
 /** A 2:1-style ellipse of four quarter arcs, the construction of bench/simulate.bench.mjs. */
 export function ellipsePath(rx, ry) {
   const K = 0.5522847498307936;

@@ -6,7 +6,7 @@ import { pairs } from '../../bench/evolver/pairs.mjs';
 import { glue, seamSamples } from '../../bench/evolver/sheet.mjs';
 import { datafile } from '../../bench/evolver/datafile.mjs';
 import { arcTable, signedArea } from '../../bench/evolver/outline.mjs';
-import { volume, maxStrain, segmentHitsTriangle, selfIntersections } from '../../bench/evolver/check.mjs';
+import { volume, maxStrain, maxBend, maxBendPerPiece, segmentHitsTriangle, selfIntersections } from '../../bench/evolver/check.mjs';
 
 const N = 48;
 const cases = pairs().map((p) => ({ ...p, sheet: glue(p.pieces, p.offset, N) }));
@@ -102,8 +102,9 @@ test('each piece\'s facets tile its flat piece: the flat areas add up to the out
         a += t;
       });
       const want = Math.abs(signedArea(c.pieces[which]));
-      // The mesh covers the polygon of the seam samples, short of the curved outline by O(h²).
-      assert.ok(a < want && a > want * (1 - 2e-2), `${c.name} piece ${which}: wanted ≈ ${want}, got ${a}`);
+      // The mesh covers the polygon of the seam samples, short of the curved outline by O(h²)
+      // (of a polygon, whose corners are samples, by round-off only).
+      assert.ok(a < want * (1 + 1e-12) && a > want * (1 - 2e-2), `${c.name} piece ${which}: wanted ≈ ${want}, got ${a}`);
     }
   }
 });
@@ -143,4 +144,18 @@ test('checks: volume of a unit tetrahedron, strain, crossing triangles', () => {
   // A pierced pair: a vertical triangle through the tetrahedron's base.
   const y = [...x, [0.2, 0.2, -1], [0.25, 0.2, 1], [0.2, 0.25, 1]];
   assert.equal(selfIntersections(y, [...tris, [4, 5, 6]], 0.5), 2); // through the base and a side
+});
+
+test('checks: each piece\'s sharpest bend, a hinge folded by a known angle', () => {
+  // Piece A: two triangles on the hinge (0,0,0)–(1,0,0), the second turned by 120° about it;
+  // piece B: two coplanar triangles; one edge shared across the pieces, folded by 90°, counts
+  // for neither (a seam edge is a free hinge).
+  const t = (120 * Math.PI) / 180;
+  const x = [[0, 0, 0], [1, 0, 0], [0.5, 1, 0], [0.5, -Math.cos(t), -Math.sin(t)], [0, 0, 5], [1, 0, 5], [0.5, 1, 5], [0.5, -1, 5], [0.5, 1, 4]];
+  const tris = [[0, 1, 2], [1, 0, 3], [4, 5, 6], [5, 4, 7], [6, 5, 8]];
+  const piece = [0, 0, 1, 1, 0];
+  const [a, b] = maxBendPerPiece(x, tris, piece);
+  assert.ok(Math.abs(a - 120) < 1e-9, `A: wanted 120°, got ${a}`);
+  assert.ok(Math.abs(b) < 1e-6, `B: wanted 0°, got ${b}`);
+  assert.equal(maxBend(x, tris, piece), a);
 });
