@@ -101,7 +101,12 @@ pairs().forEach((pair, index) => {
     const [oa, ob] = maxBendPerPiece(ours.vertices, ours.triangles, ours.piece);
     const both = eb > 90 && ob > 90;
     console.log(`  sharpest bend inside A / B: Evolver ${ea.toFixed(1)}° / ${eb.toFixed(1)}°, ours ${oa.toFixed(1)}° / ${ob.toFixed(1)}° (shortfall ${s.shortfall})`);
-    console.log(`  crease: ${both ? 'both fold the circle by more than 90°, beside the notch: the crease is the sheet\'s, not our solver\'s' : 'Evolver and ours disagree on whether the circle folds by more than 90°'}${ok ? '' : ' (Evolver not converged)'}`);
+    const verdict = !ok
+      ? 'Evolver did not settle into an inextensible, embedded sheet, so this run says nothing about the crease'
+      : both
+        ? 'both fold the circle by more than 90°, beside the notch: the crease is the sheet\'s, not our solver\'s'
+        : 'Evolver and ours disagree on whether the circle folds by more than 90°';
+    console.log(`  crease: ${verdict}`);
   }
   const ratio = s.volume / vol;
   console.log(`  ratio ours / Evolver: ${ratio.toFixed(4)} (${((ratio - 1) * 100).toFixed(2)} %)${ok ? '' : ' — Evolver not converged'}`);
