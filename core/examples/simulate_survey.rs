@@ -53,7 +53,7 @@ fn convex_pairs() {
         }
     }
     for r in [1.0, 4.0] {
-        pieces.push((format!("triangle r {r}"), shapes::rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (30.0, 60.0)], r)));
+        pieces.push((format!("triangle r {r}"), shapes::rounded_triangle(r)));
         let hexagon: Vec<(f64, f64)> = (0..6).map(|k| (50.0 * (k as f64 * PI / 3.0).cos(), 50.0 * (k as f64 * PI / 3.0).sin())).collect();
         pieces.push((format!("hexagon r {r}"), shapes::rounded_polygon(&hexagon, r)));
     }

@@ -176,7 +176,7 @@ fn rounded_rectangle_with_circle_converges_to_a_convex_shape() {
 #[test]
 fn test_issue_14_a_rectangle_with_2mm_rounded_corners_converges_at_every_offset() {
     // First anchor where the rounding of the corner at the origin meets the left side.
-    let r = shapes::rounded_polygon(&[(0.0, 0.0), (60.0, 0.0), (60.0, 40.0), (0.0, 40.0)], 2.0);
+    let r = shapes::rounded_rect(60.0, 40.0, 2.0);
     let c = circle_like(&r);
     let p = perimeter(&r);
     let flat = r.signed_area().abs() + c.signed_area().abs();
@@ -206,7 +206,7 @@ fn test_issue_14_a_rectangle_with_2mm_rounded_corners_converges_at_every_offset(
 #[test]
 fn test_issue_14_converged_means_every_edge_within_1e_3_at_coarse_resolutions() {
     use dformer::simulate::Shortfall;
-    let r = shapes::rounded_polygon(&[(0.0, 0.0), (60.0, 0.0), (60.0, 40.0), (0.0, 40.0)], 1.0);
+    let r = shapes::rounded_rect(60.0, 40.0, 1.0);
     let c = circle_like(&r);
     for n in [64, 128, 256] {
         let s = run(&r, &c, 0.0, n);
@@ -235,7 +235,7 @@ fn test_issue_14_converged_means_every_edge_within_1e_3_at_coarse_resolutions() 
 fn test_issue_14_corners_rounded_below_a_third_of_a_millimetre_converge() {
     let mut last = 0.0;
     for r in [0.3, 0.2, 0.1] {
-        let a = shapes::rounded_polygon(&[(0.0, 0.0), (60.0, 0.0), (60.0, 40.0), (0.0, 40.0)], r);
+        let a = shapes::rounded_rect(60.0, 40.0, r);
         let c = shapes::circle_for(&a);
         let mut volumes = Vec::new();
         for k in [0, 3] {
@@ -909,7 +909,7 @@ fn test_issue_14_corners_rounded_below_the_seam_step_are_taken_as_corners() {
 /// afterwards) adds a seam vertex where a crease crosses the seam.
 #[test]
 fn test_issue_14_congruent_rounded_rectangles_crease_across_the_seam() {
-    let r = shapes::rounded_polygon(&[(0.0, 0.0), (200.0, 0.0), (200.0, 40.0), (0.0, 40.0)], 1.0);
+    let r = shapes::rounded_rect(200.0, 40.0, 1.0);
     let p = perimeter(&r);
     for k in [2, 3, 7] {
         let s = run(&r, &r, k as f64 / 16.0 * p, 256);
@@ -992,7 +992,7 @@ fn sound_convexity_violation(s: &Simulation) -> f64 {
 #[test]
 fn test_issue_14_needle_triangles_do_not_hide_the_convex_form() {
     for (w, h, r, k) in [(200.0, 40.0, 3.0, 7), (120.0, 80.0, 1.0, 7)] {
-        let rect = shapes::rounded_polygon(&[(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)], r);
+        let rect = shapes::rounded_rect(w, h, r);
         let s = run(&rect, &rect, k as f64 / 16.0 * perimeter(&rect), 256);
         let v = assert_convex_answer(&s, &format!("{w} × {h} r {r} at {k}/16"), &rect, &rect);
         assert_same_volume_half_a_turn_on(&rect, k, v);
@@ -1004,7 +1004,7 @@ fn test_issue_14_needle_triangles_do_not_hide_the_convex_form() {
 /// ([`assert_convex_answer`]), and one form (a circle is the same wherever the seam starts on it:
 /// the volumes within 1e-3).
 fn assert_triangle_on_a_circle_is_one_form(sixteenths: &[usize]) {
-    let tri = shapes::rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (30.0, 60.0)], 1.0);
+    let tri = shapes::rounded_triangle(1.0);
     let circle = shapes::circle_for(&tri);
     let volumes: Vec<f64> = sixteenths
         .iter()
@@ -1021,7 +1021,7 @@ fn assert_triangle_on_a_circle_is_one_form(sixteenths: &[usize]) {
 /// was held to 1e-6. It is now held to 1e-5, a hundredth of what `converged` promises.
 #[test]
 fn test_issue_14_rectangles_with_8mm_corners_settle_within_1e_5() {
-    let rect = shapes::rounded_polygon(&[(0.0, 0.0), (200.0, 0.0), (200.0, 40.0), (0.0, 40.0)], 8.0);
+    let rect = shapes::rounded_rect(200.0, 40.0, 8.0);
     for k in [3, 7] {
         let s = run(&rect, &rect, k as f64 / 16.0 * perimeter(&rect), 256);
         let v = assert_convex_answer(&s, &format!("200 × 40 r 8 at {k}/16"), &rect, &rect);

@@ -143,6 +143,17 @@ pub fn rounded_polygon(pts: &[(f64, f64)], r: f64) -> Contour {
     Contour::new(knots, 0).unwrap()
 }
 
+/// A `w` × `h` rectangle with its corners rounded by `r` ([`rounded_polygon`]), its first anchor
+/// where the corner at the origin meets the left side.
+pub fn rounded_rect(w: f64, h: f64, r: f64) -> Contour {
+    rounded_polygon(&[(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)], r)
+}
+
+/// The survey's triangle (corners of 63°, 50° and 66°) with its corners rounded by `r`.
+pub fn rounded_triangle(r: f64) -> Contour {
+    rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (30.0, 60.0)], r)
+}
+
 /// A five-pointed star with rounded tips: r = 50(1 + 0.3 cos 5θ)^... sampled smoothly.
 pub fn rounded_star() -> Contour {
     polar(100, |t| 50.0 * (1.0 + 0.28 * (5.0 * t).cos().powi(3)))

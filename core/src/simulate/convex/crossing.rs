@@ -21,8 +21,8 @@
 //!    cap ([`Chords::without_caps`]), and held to convexity as far as its sound faces can tell
 //!    ([`sound`]).
 //!
-//! Of the survey's congruent gluings 339 of 384 converge (67 of them with seam vertices added),
-//! 368 of 384 with a circle. Among the misses: 21 superellipses, whose outlines bend inward at a
+//! Of the survey's congruent gluings 340 of 384 converge (69 of them with seam vertices added),
+//! 368 of 384 with a circle. Among the misses: 28 superellipses, whose outlines bend inward at a
 //! few samples (no convex metric to embed); embeddings whose continuation stalls within
 //! [`NEWTON`] steps with one edge per vertex pair and [`MULTI_NEWTON`] with several; and answers
 //! whose step 5 does not settle within [`POLISHED_STRAIN`], because the chord meshes' length
