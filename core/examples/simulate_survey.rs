@@ -5,9 +5,10 @@
 //! 1. *Convex pairs*: ellipses, superellipses (|x/a|⁴ + |y/b|⁴ = 1), rectangles with rounded
 //!    corners and rounded polygons, each glued to a circle of its perimeter and to a congruent
 //!    copy of itself (the classic D-form of two equal pieces), at 16 offsets. Alexandrov's theorem
-//!    says each has exactly one convex form, so every unconverged answer is the solver's failure
-//!    (or, for the superellipses, of their smooth outline through 64 points, which bulges inward
-//!    by up to 2e-3 rad at a few samples: not quite convex). Also counted: answers whose creases
+//!    says each has exactly one convex form, so every unconverged answer is the solver's failure.
+//!    (The superellipses and the 200 × 40 ellipse are drawn through 64 points with smooth
+//!    handles, which bend inward by a hair between points: their 256 seam samples are not
+//!    convex, so `simulate` solves them as a non-convex pair, on the sheet path.) Also counted: answers whose creases
 //!    cross the seam (the intrinsic path adds seam vertices there) and the slowest answer.
 //!    Also counted: answers called converged with an edge more than 1e-3 off its flat length (the
 //!    seam samples' floor at tight corners, see `simulate::density`).

@@ -159,7 +159,10 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     // its form ([`frame`]); `flat` goes back to the input's coordinates at the end.
     let ((a, fa), (b, fb)) = (frame::local(a, 0), frame::local(b, 1));
     let glue = seam::Glue::new(&a, &b, options.offset)?;
-    let convex = glue.sample(seam::COARSEST).flat.iter().all(|f| checks::is_convex_polygon(&f.pts));
+    // Convex at the coarsest samples and at the resolution's: an outline that bends inward by
+    // a hair between coarse samples (a 200 × 40 ellipse through 64 smooth points) is no convex
+    // metric at the resolution, and the convex path would spend the whole budget on it.
+    let convex = [seam::COARSEST, options.resolution].iter().all(|&n| glue.sample(n).flat.iter().all(|f| checks::is_convex_polygon(&f.pts)));
     // A pair with a non-convex piece: the convex path gives the sheet path its start (or, when
     // it meets every promise, e.g. the flat doubly covered sheet, the answer) on a short budget.
     // A previous result's vertices are no warm start here: a sheet's answer has interior vertices.

@@ -20,6 +20,7 @@ use crate::validate;
 use super::density::{Density, KINK_WINDOW, REFERENCE};
 use super::kink::{kinks, Walk};
 use super::metric::KeyMap;
+use std::cell::RefCell;
 
 /// Relative accuracy of the arc lengths used to place seam samples: far below any visible or
 /// measurable effect (the seam gap target is 1e-4 of the perimeter) and cheap to invert.
@@ -94,6 +95,9 @@ pub struct Glue {
     density: Option<Density>,
     /// Each piece walked along the seam, its kinks taken as corners ([`Walk`]).
     walk: [Walk; 2],
+    /// The points sampled so far, shared by every call of [`Glue::sample`] and
+    /// [`Glue::sample_levels`] (see [`Glue::sample_cached`]).
+    points: RefCell<[(KeyMap, Vec<[f64; 2]>); 2]>,
 }
 
 impl Glue {
@@ -149,7 +153,7 @@ impl Glue {
         }
         crate::order::sort_f64(&mut corners);
         let density = Density::new(&ta, &tb, starts, [&kinks[0], &kinks[1]]);
-        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], corners, density, walk })
+        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], corners, density, walk, points: Default::default() })
     }
 
     /// Seam positions of `n` samples: equal steps `h = L/n` from 0, with the nearest free sample
@@ -262,17 +266,18 @@ impl Glue {
 
     /// Both pieces sampled at `n` seam vertices ([`Glue::positions`]).
     pub fn sample(&self, n: usize) -> SeamPieces {
-        self.sample_cached(n, &mut Default::default())
+        self.sample_cached(n, &mut self.points.borrow_mut())
     }
 
-    /// [`Glue::sample`] at each of `ns`, the same values, with every seam point that two levels
-    /// share computed once. The levels of the coarse-to-fine ladder nest ([`Glue::positions`]):
-    /// a level's samples are every other sample of the next, and its arc midpoints that level's
-    /// odd samples, the same arc lengths bit for bit. Inverting the arc length is the costly part
-    /// (kurbo's `inv_arclen`; the four levels 32…256 were 13 % of a cold solve), and the ladder
-    /// then needs the finest level's points only.
+    /// [`Glue::sample`] at each of `ns`, the same values. Every seam point is computed once per
+    /// glue, whichever call asks for it first: the levels of the coarse-to-fine ladder nest
+    /// ([`Glue::positions`]): a level's samples are every other sample of the next, and its arc
+    /// midpoints that level's odd samples, the same arc lengths bit for bit. Inverting the arc
+    /// length is the costly part (kurbo's `inv_arclen`; the four levels 32…256 were 13 % of a
+    /// cold solve), and the ladder then needs the finest level's points only; the convexity test
+    /// of `simulate` samples the finest level before the ladder does, at no extra cost.
     pub fn sample_levels(&self, ns: &[usize]) -> Vec<SeamPieces> {
-        let mut cache = Default::default();
+        let mut cache = self.points.borrow_mut();
         ns.iter().map(|&n| self.sample_cached(n, &mut cache)).collect()
     }
 

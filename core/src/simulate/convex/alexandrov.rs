@@ -436,10 +436,11 @@ pub(crate) fn embed(mesh: &mut Mesh, max_newton: usize, iterations: &mut usize) 
 }
 
 /// How far below zero a vertex's curvature κ may start, and how far above δ (see [`embed`]).
-/// The metric's own δ is ≥ 0 for convex pieces up to the seam edges' mean lengths (~1e-9 with the
-/// pieces' Delaunay triangulations, see [`Mesh::from_chords`]); an outline that bends inward by a
-/// little (a superellipse's smooth outline through 64 points: −2e-3 rad at a few samples) starts
-/// below zero and usually ends unconverged.
+/// The metric's own δ is ≥ 0 for convex pieces up to the seam edges' mean lengths (see
+/// [`Mesh::from_chords`]): ~1e-9 on curved seams, but −4.5e-4 at a sample beside a 3 mm corner
+/// of two congruent 120 × 80 rectangles at 3/16, where the embedding then stalls. An outline
+/// that bends inward by a little between coarse samples is no convex pair at the resolution and
+/// does not come here (`simulate` tests the resolution's samples).
 pub(crate) const KAPPA_SLACK: f64 = 1e-2;
 
 /// How far past π an edge's dihedral angle sum may go before it is flipped.
