@@ -195,6 +195,30 @@ fn test_issue_14_a_rectangle_with_2mm_rounded_corners_converges_at_every_offset(
     }
 }
 
+/// Regression: two congruent rounded rectangles at an offset where long straight stretches of
+/// both meet on the seam ended 1–7 % stretched. There the glued metric is flat, and the seam
+/// edges' mean lengths leave a flat sample's curvature a hair below zero (−4.5e-4), so the
+/// Bobenko–Izmestiev continuation flipped the edges around it to and fro and stalled. A
+/// rectangle is its own half-turn, so a gluing half a perimeter on is the same gluing: each must
+/// converge to its twin's volume (the twins converged before), every edge within 1e-3 of its
+/// flat length.
+#[test]
+fn test_issue_14_congruent_rounded_rectangles_meeting_along_a_flat_seam_converge() {
+    for (w, h, r, k, twin) in [(160.0, 60.0, 1.0, 8, 0), (120.0, 80.0, 3.0, 15, 7)] {
+        let a = shapes::rounded_rect(w, h, r);
+        let p = perimeter(&a);
+        let want = volume_area(&run(&a, &a, twin as f64 / 16.0 * p, 256)).0;
+        let s = run(&a, &a, k as f64 / 16.0 * p, 256);
+        assert!(s.stats.converged, "{w} × {h} r {r} at {k}/16: wanted converged, got {:?}", s.stats);
+        assert_closed(&s);
+        let strain = mesh_checks::max_edge_strain(&s);
+        assert!(strain <= 1e-3, "{w} × {h} r {r} at {k}/16: every edge within 1e-3 of its flat length, got {strain:.2e}");
+        let got = volume_area(&s).0;
+        println!("{w} × {h} r {r}: volume at {k}/16 {got:.1}, at {twin}/16 {want:.1} (wanted)");
+        assert!((got - want).abs() <= 1e-4 * want, "{w} × {h} r {r}: wanted the volume at {twin}/16, {want:.1}, got {got:.1}");
+    }
+}
+
 /// Regression: `converged` promises every edge within 1e-3 of its flat length, but a convex
 /// pair's answer was called converged when its polyhedron met its own length equations, whose
 /// seam edges take one length between A's and B's chords. A 60 × 40 rectangle with 1 mm corners
