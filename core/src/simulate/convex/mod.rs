@@ -8,10 +8,11 @@
 //! - [`polyhedral`]: polygon pairs solved on their cone points;
 //! - [`crossing`]: the fallback when a crease crosses the seam, on an intrinsic triangulation
 //!   ([`intrinsic`]) embedded by Bobenko & Izmestiev's method ([`alexandrov`]) and cut along the
-//!   seam ([`overlay`]).
+//!   seam ([`overlay`]), without the samples where both pieces run straight ([`flat`]).
 
 pub mod alexandrov;
 pub mod crossing;
+pub mod flat;
 pub mod hull;
 pub mod intrinsic;
 pub mod overlay;
