@@ -229,27 +229,38 @@ fn test_issue_14_congruent_rounded_rectangles_meeting_along_a_flat_seam_converge
 #[test]
 fn test_issue_14_congruent_rectangles_near_their_flat_gluing_converge() {
     let a = shapes::rounded_rect(120.0, 80.0, 3.0);
-    let mut volumes = Vec::new();
-    for d in [1.0, 4.0] {
-        let pair: Vec<f64> = [74.0 - d, 74.0 + d]
-            .iter()
-            .map(|&o| {
-                let s = run(&a, &a, o, 256);
-                assert!(s.stats.converged, "offset {o} mm: wanted converged, got {:?}", s.stats);
-                assert_closed(&s);
-                let strain = mesh_checks::max_edge_strain(&s);
-                assert!(strain <= 1e-3, "offset {o} mm: every edge within 1e-3 of its flat length, got {strain:.2e}");
-                assert!(s.seam.len() >= 256, "offset {o} mm: every seam sample a vertex, got {} seam vertices", s.seam.len());
-                volume_area(&s).0
-            })
-            .collect();
-        println!("δ {d} mm: volumes {:.1} and {:.1}", pair[0], pair[1]);
-        assert!((pair[0] - pair[1]).abs() <= 1e-3 * pair[0], "δ {d} mm: mirror images must have one volume, got {pair:?}");
-        volumes.push(pair[0]);
-    }
+    let volumes = [1.0, 4.0].map(|d| {
+        let pair = mirror_volumes(&a, 74.0, d);
+        for s in &pair.1 {
+            assert!(s.seam.len() >= 256, "δ {d} mm: every seam sample a vertex, got {} seam vertices", s.seam.len());
+        }
+        pair.0
+    });
     // Four times the distance from the flat gluing, twice the volume (to 10 %).
     let ratio = volumes[1] / volumes[0];
     assert!((ratio - 2.0).abs() <= 0.2, "wanted the volume to grow as √δ (ratio 2), got {ratio:.3}");
+}
+
+/// The congruent gluings of `a` at `flat ∓ d` (mm), where `flat` is an offset at which they fold
+/// flat (a mirror gluing), so the two are mirror images: each must converge, every edge within
+/// 1e-3 of its flat length, closed, and both must have one volume (to 1e-3). Returns the
+/// volume and the two answers.
+fn mirror_volumes(a: &Contour, flat: f64, d: f64) -> (f64, Vec<Simulation>) {
+    let pair: Vec<Simulation> = [flat - d, flat + d]
+        .iter()
+        .map(|&o| {
+            let s = run(a, a, o, 256);
+            assert!(s.stats.converged, "offset {o} mm: wanted converged, got {:?}", s.stats);
+            assert_closed(&s);
+            let strain = mesh_checks::max_edge_strain(&s);
+            assert!(strain <= 1e-3, "offset {o} mm: every edge within 1e-3 of its flat length, got {strain:.2e}");
+            s
+        })
+        .collect();
+    let v = [volume_area(&pair[0]).0, volume_area(&pair[1]).0];
+    println!("δ {d:.4} mm: volumes {:.1} and {:.1}", v[0], v[1]);
+    assert!((v[0] - v[1]).abs() <= 1e-3 * v[0], "δ {d} mm: mirror images must have one volume, got {v:?}");
+    (v[0], pair)
 }
 
 /// Regression: two congruent 160 × 60 rectangles with 3 mm corners at 2/16 of the perimeter
@@ -261,25 +272,9 @@ fn test_issue_14_congruent_rectangles_near_their_flat_gluing_converge() {
 #[test]
 fn test_issue_14_a_nearly_flat_pillow_dented_by_its_chords_is_kept() {
     let a = shapes::rounded_rect(160.0, 60.0, 3.0);
-    let two = 2.0 / 16.0 * perimeter(&a);
-    let mut volumes = Vec::new();
-    for d in [0.1, two - 54.0] {
-        let pair: Vec<f64> = [54.0 - d, 54.0 + d]
-            .iter()
-            .map(|&o| {
-                let s = run(&a, &a, o, 256);
-                assert!(s.stats.converged, "offset {o} mm: wanted converged, got {:?}", s.stats);
-                assert_closed(&s);
-                let strain = mesh_checks::max_edge_strain(&s);
-                assert!(strain <= 1e-3, "offset {o} mm: every edge within 1e-3 of its flat length, got {strain:.2e}");
-                volume_area(&s).0
-            })
-            .collect();
-        println!("δ {d:.4} mm: volumes {:.1} and {:.1}", pair[0], pair[1]);
-        assert!((pair[0] - pair[1]).abs() <= 1e-3 * pair[0], "δ {d} mm: mirror images must have one volume, got {pair:?}");
-        volumes.push((d, pair[0]));
-    }
-    let (want, got) = ((volumes[1].0 / volumes[0].0).sqrt(), volumes[1].1 / volumes[0].1);
+    let ds = [0.1, 2.0 / 16.0 * perimeter(&a) - 54.0];
+    let volumes = ds.map(|d| mirror_volumes(&a, 54.0, d).0);
+    let (want, got) = ((ds[1] / ds[0]).sqrt(), volumes[1] / volumes[0]);
     assert!((got - want).abs() <= 0.05 * want, "wanted the volume to grow as √δ (ratio {want:.3}), got {got:.3}");
 }
 
