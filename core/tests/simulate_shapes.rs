@@ -278,6 +278,30 @@ fn test_issue_14_a_nearly_flat_pillow_dented_by_its_chords_is_kept() {
     assert!((got - want).abs() <= 0.05 * want, "wanted the volume to grow as √δ (ratio {want:.3}), got {got:.3}");
 }
 
+/// Regression: creases across the seam were found only up to 256 seam vertices, counting every
+/// sample, so two congruent 200 × 40 rectangles with 1 mm corners at 4/16 ended 36 % stretched
+/// at 512. Counted without the samples on the straight stretches both share, they are well
+/// within the limit: the gluing and its half-turn twin at 12/16 must converge at 512 to one
+/// volume, within 0.5 % of the answer at 256, every edge within 1e-3 of its flat length.
+#[test]
+fn test_issue_14_creases_across_the_seam_at_512_seam_vertices() {
+    let a = shapes::rounded_rect(200.0, 40.0, 1.0);
+    let p = perimeter(&a);
+    let coarse = volume_area(&run(&a, &a, 4.0 / 16.0 * p, 256)).0;
+    let v = [4.0, 12.0].map(|k| {
+        let s = run(&a, &a, k / 16.0 * p, 512);
+        assert!(s.stats.converged, "{k}/16 at 512: wanted converged, got {:?}", s.stats);
+        assert_closed(&s);
+        let strain = mesh_checks::max_edge_strain(&s);
+        assert!(strain <= 1e-3, "{k}/16 at 512: every edge within 1e-3 of its flat length, got {strain:.2e}");
+        assert!(s.seam.len() > 512, "{k}/16 at 512: wanted seam vertices where the creases cross, got {}", s.seam.len());
+        volume_area(&s).0
+    });
+    println!("volumes at 512: {:.1} and {:.1}; at 256: {coarse:.1}", v[0], v[1]);
+    assert!((v[0] - v[1]).abs() <= 1e-3 * v[0], "one gluing, one volume: got {v:?}");
+    assert!((v[0] - coarse).abs() <= 5e-3 * coarse, "wanted the volume at 256 ({coarse:.1}) within 0.5 %, got {:.1}", v[0]);
+}
+
 /// Regression: `converged` promises every edge within 1e-3 of its flat length, but a convex
 /// pair's answer was called converged when its polyhedron met its own length equations, whose
 /// seam edges take one length between A's and B's chords. A 60 × 40 rectangle with 1 mm corners
