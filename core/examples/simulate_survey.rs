@@ -76,12 +76,12 @@ fn convex_pairs() {
             let tiny = 1e-9 * shapes::perimeter(a).powi(3);
             for k in 0..16 {
                 let s = solve(a, &b, k as f64 / 16.0);
+                // Interior vertices: the sheet path's answer (samples not convex at N).
                 let sheet = s.vertices.len() > s.seam.len();
                 volumes.push((s.stats.converged && s.stats.max_strain <= 1e-3).then_some((s.stats.volume, sheet)));
                 slowest = slowest.max(s.stats.ms);
                 crossed += usize::from(s.seam.len() > N);
-                // Interior vertices: the sheet path's answer (samples not convex at N).
-                sheets += usize::from(s.vertices.len() > s.seam.len());
+                sheets += usize::from(sheet);
                 if !s.stats.converged {
                     failed += 1;
                     line += &format!(" [{k}: {:.0e}]", s.stats.max_strain);

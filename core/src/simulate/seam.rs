@@ -277,8 +277,7 @@ impl Glue {
     /// cold solve), and the ladder then needs the finest level's points only; the convexity test
     /// of `simulate` samples the finest level before the ladder does, at no extra cost.
     pub fn sample_levels(&self, ns: &[usize]) -> Vec<SeamPieces> {
-        let mut cache = self.points.borrow_mut();
-        ns.iter().map(|&n| self.sample_cached(n, &mut cache)).collect()
+        ns.iter().map(|&n| self.sample(n)).collect()
     }
 
     /// [`Glue::sample`] with the points already computed, per piece, keyed by the bits of their

@@ -15,17 +15,18 @@
 use super::super::metric::{orient, size2, Triangulation};
 use super::super::seam::{FlatPiece, SeamPieces};
 use super::super::vec3::V3;
+use super::intrinsic::lerp2;
+use super::overlay::lerp3;
 
 /// The samples of `pieces` to keep: the first, and every one where either piece turns (its two
 /// neighbours not collinear with it to 1e-12 of the piece's size²).
 pub(crate) fn kept(pieces: &SeamPieces) -> Vec<usize> {
     let n = pieces.n;
-    let straight = |k: usize| {
-        pieces.flat.iter().all(|f| {
-            let eps = 1e-12 * size2(&f.pts);
-            orient(f.pts[(k + n - 1) % n], f.pts[k], f.pts[(k + 1) % n]).abs() <= eps
-        })
-    };
+    let eps = pieces.flat.each_ref().map(|f| 1e-12 * size2(&f.pts));
+    let straight = |k: usize| (0..2).all(|p| {
+        let f = &pieces.flat[p].pts;
+        orient(f[(k + n - 1) % n], f[k], f[(k + 1) % n]).abs() <= eps[p]
+    });
     (0..n).filter(|&k| k == 0 || !straight(k)).collect()
 }
 
@@ -39,16 +40,12 @@ pub(crate) fn only(pieces: &SeamPieces, keep: &[usize]) -> SeamPieces {
         let arc_mid = (0..m)
             .map(|i| {
                 let (u, w) = (keep[i], if i + 1 < m { keep[i + 1] } else { n });
-                if w == u + 1 { f.arc_mid[u] } else { mid(f.pts[u], f.pts[w % n]) }
+                if w == u + 1 { f.arc_mid[u] } else { lerp2(f.pts[u], f.pts[w % n], 0.5) }
             })
             .collect();
         FlatPiece { pts, arc_mid, area: f.area, perimeter: f.perimeter }
     });
     SeamPieces { n: m, flat }
-}
-
-fn mid(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
-    [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]
 }
 
 /// Share of its straight stretch within which a left-out sample and a point of the answer are
@@ -69,9 +66,6 @@ fn along(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> f64 {
 /// `cut` or its edge has no triangle.
 pub(crate) fn put_back(pieces: &SeamPieces, keep: &[usize], cut: &SeamPieces, x: &[V3], tri: &[Triangulation; 2]) -> Option<(SeamPieces, Vec<V3>, [Triangulation; 2])> {
     let (n, m) = (pieces.n, cut.n);
-    if keep.len() == n {
-        return Some((cut.clone(), x.to_vec(), tri.clone()));
-    }
     let a = &pieces.flat[0].pts;
     // Each kept sample's index among the cut's seam points (the cut keeps them, in order).
     let mut at = Vec::with_capacity(keep.len());
@@ -107,54 +101,48 @@ pub(crate) fn put_back(pieces: &SeamPieces, keep: &[usize], cut: &SeamPieces, x:
     }
     // New order: each cut point, then the samples put back on its outgoing edge.
     let mut new_of = vec![0usize; m];
-    let mut order: Vec<(Option<usize>, Option<usize>)> = Vec::new(); // (cut point, sample)
+    let mut order: Vec<Point> = Vec::with_capacity(m + n - keep.len());
     for j in 0..m {
         new_of[j] = order.len();
-        order.push((Some(j), None));
+        order.push(Point::Cut(j));
         inside[j].sort_by(|p, q| p.1.total_cmp(&q.1));
-        order.extend(inside[j].iter().map(|&(d, _)| (None, Some(d))));
+        order.extend(inside[j].iter().map(|&(d, _)| Point::Sample { d, j }));
     }
     let total = order.len();
-    let mut xs = Vec::with_capacity(total);
     let flat = [0, 1].map(|p| {
         let (c, f) = (&cut.flat[p], &pieces.flat[p]);
-        let pts: Vec<[f64; 2]> = order.iter().map(|o| if let (Some(j), _) = o { c.pts[*j] } else { f.pts[o.1.unwrap_or(0)] }).collect();
+        let pts: Vec<[f64; 2]> = order.iter().map(|o| match *o { Point::Cut(j) => c.pts[j], Point::Sample { d, .. } => f.pts[d] }).collect();
         let arc_mid = (0..total)
             .map(|i| match (order[i], order[(i + 1) % total]) {
-                ((Some(j), _), (Some(_), _)) => c.arc_mid[j],
-                _ => mid(pts[i], pts[(i + 1) % total]),
+                (Point::Cut(j), Point::Cut(_)) => c.arc_mid[j],
+                _ => lerp2(pts[i], pts[(i + 1) % total], 0.5),
             })
             .collect();
         FlatPiece { pts, arc_mid, area: c.area, perimeter: c.perimeter }
     });
-    for (i, o) in order.iter().enumerate() {
-        match o {
-            (Some(j), _) => xs.push(x[*j]),
-            _ => {
-                // On the edge from the last cut point before it to the next one.
-                let j = (0..=i).rev().find_map(|q| order[q].0).unwrap_or(0);
-                let (u, w) = (flat[0].pts[new_of[j]], cut.flat[0].pts[(j + 1) % m]);
-                let t = along(u, w, flat[0].pts[i]);
-                let (xu, xw) = (x[j], x[(j + 1) % m]);
-                xs.push([0, 1, 2].map(|c| xu[c] + t * (xw[c] - xu[c])));
-            }
-        }
-    }
+    let xs: Vec<V3> = order
+        .iter()
+        .map(|o| match *o {
+            Point::Cut(j) => x[j],
+            // On the edge j → j + 1, which is straight in space as in both pieces.
+            Point::Sample { d, j } => lerp3(x[j], x[(j + 1) % m], along(cut.flat[0].pts[j], cut.flat[0].pts[(j + 1) % m], a[d])),
+        })
+        .collect();
     let mut out = Vec::with_capacity(2);
     for t in tri {
         let mut tris = Vec::with_capacity(t.tris.len() + total - m);
         let mut split = vec![false; t.tris.len()];
-        for j in 0..m {
-            if inside[j].is_empty() {
+        for (j, on_edge) in inside.iter().enumerate() {
+            if on_edge.is_empty() {
                 continue;
             }
             let (u, w) = (j, (j + 1) % m);
-            let ti = t.tris.iter().position(|tr| (0..3).any(|c| tr[c] == u && tr[(c + 1) % 3] == w))?;
+            let (ti, c) = t.tris.iter().enumerate().find_map(|(ti, tr)| (0..3).find(|&c| tr[c] == u && tr[(c + 1) % 3] == w).map(|c| (ti, c)))?;
             split[ti] = true;
-            let apex = t.opposite(u, w)?;
+            let apex = t.tris[ti][(c + 2) % 3];
             // The fan u → samples → w, each triangle counter-clockwise like the one it splits.
             let mut chain = vec![new_of[u]];
-            chain.extend((1..=inside[j].len()).map(|s| new_of[u] + s));
+            chain.extend((1..=on_edge.len()).map(|s| new_of[u] + s));
             chain.push(new_of[w]);
             tris.extend(chain.windows(2).map(|e| [e[0], e[1], new_of[apex]]));
         }
@@ -163,4 +151,12 @@ pub(crate) fn put_back(pieces: &SeamPieces, keep: &[usize], cut: &SeamPieces, x:
     }
     let tri = [out.remove(0), out.remove(0)];
     Some((SeamPieces { n: total, flat }, xs, tri))
+}
+
+/// A seam point of [`put_back`]'s answer: point `j` of the cut, or the left-out sample `d` of
+/// the pieces, on the cut's seam edge `j` → `j + 1`.
+#[derive(Debug, Clone, Copy)]
+enum Point {
+    Cut(usize),
+    Sample { d: usize, j: usize },
 }

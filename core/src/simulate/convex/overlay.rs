@@ -15,7 +15,7 @@ use super::super::seam::{FlatPiece, SeamPieces};
 use super::super::vec3::{norm, sub, V3};
 use super::intrinsic::{lerp2, Mesh};
 
-fn lerp3(a: V3, b: V3, t: f64) -> V3 {
+pub(crate) fn lerp3(a: V3, b: V3, t: f64) -> V3 {
     [0, 1, 2].map(|c| a[c] + t * (b[c] - a[c]))
 }
 
