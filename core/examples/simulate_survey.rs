@@ -18,7 +18,8 @@
 //!    Also counted: answers called converged with an edge more than 1e-3 off its flat length (the
 //!    seam samples' floor at tight corners, see `simulate::density`).
 //! 2. *Organic pairs*: smooth random blobs r = 50(1 + Σ a_k cos(kθ + φ_k)), k = 2…5, glued to a
-//!    circle at a random offset (a fixed xorshift seed), counted by `stats.shortfall`.
+//!    circle at a random offset (a fixed xorshift seed), and to another blob, counted by
+//!    `stats.shortfall`.
 //! 3. *Bays*: an 80 mm L whose notch deepens from 10 to 40 mm, with a circle: where the form
 //!    starts to crease (the panel's advice for a creased form rests on this).
 //!
@@ -125,26 +126,52 @@ fn convex_pairs() {
     }
 }
 
-fn organic_pairs() {
-    let mut seed: u64 = 7;
-    let mut rnd = move || {
+/// A xorshift generator of numbers in [0, 1) from `seed`.
+fn xorshift(mut seed: u64) -> impl FnMut() -> f64 {
+    move || {
         seed ^= seed << 13;
         seed ^= seed >> 7;
         seed ^= seed << 17;
         (seed % 1_000_000) as f64 / 1e6
-    };
-    let count = 30;
+    }
+}
+
+/// A smooth random blob r = 50(1 + Σ a_k cos(kθ + φ_k)), k = 2…5, |a_k| < 1/(2k).
+fn blob(rnd: &mut impl FnMut() -> f64) -> Contour {
+    let h: Vec<(f64, f64, f64)> = (2..6).map(|k| (k as f64, (rnd() - 0.5) / k as f64, rnd() * TAU)).collect();
+    shapes::polar(48, move |t| 50.0 * (1.0 + h.iter().map(|(k, amp, ph)| amp * (k * t + ph).cos()).sum::<f64>()))
+}
+
+fn tally_of(answers: impl Iterator<Item = Simulation>) -> (BTreeMap<String, usize>, f64) {
     let mut tally: BTreeMap<String, usize> = BTreeMap::new();
     let mut worst_ms: f64 = 0.0;
-    for _ in 0..count {
-        let h: Vec<(f64, f64, f64)> = (2..6).map(|k| (k as f64, (rnd() - 0.5) / k as f64, rnd() * TAU)).collect();
-        let a = shapes::polar(48, |t| 50.0 * (1.0 + h.iter().map(|(k, amp, ph)| amp * (k * t + ph).cos()).sum::<f64>()));
-        let s = solve(&a, &shapes::circle_for(&a), rnd());
+    for s in answers {
         worst_ms = worst_ms.max(s.stats.ms);
         let key = s.stats.shortfall.map_or("converged".to_string(), |f| f.name().to_string());
         *tally.entry(key).or_default() += 1;
     }
+    (tally, worst_ms)
+}
+
+fn organic_pairs() {
+    let mut rnd = xorshift(7);
+    let count = 30;
+    let (tally, worst_ms) = tally_of((0..count).map(|_| {
+        let a = blob(&mut rnd);
+        let offset = rnd();
+        solve(&a, &shapes::circle_for(&a), offset)
+    }));
     println!("2. Organic blobs with a circle, {count} random pairs (seed 7), {N} seam vertices: {tally:?}, slowest {worst_ms:.0} ms native");
+    // Two blobs, the second scaled to the first's perimeter, at offsets 0.37 of a perimeter
+    // apart: where a bay of one meets the other the seam is a saddle (`simulate::sheet::saddle`).
+    let mut rnd = xorshift(11);
+    let count = 40;
+    let (tally, worst_ms) = tally_of((0..count).map(|i| {
+        let a = blob(&mut rnd);
+        let b = shapes::with_perimeter(&blob(&mut rnd), shapes::perimeter(&a));
+        solve(&a, &b, (i as f64 * 0.37) % 1.0)
+    }));
+    println!("   Two organic blobs, {count} random pairs (seed 11), {N} seam vertices: {tally:?}, slowest {worst_ms:.0} ms native");
 }
 
 fn bays() {
