@@ -218,6 +218,84 @@ fn test_issue_14_organic_volumes_agree_at_128_and_256_seam_vertices() {
     }
 }
 
+/// Regression (requirement 3): the five lobes' volume moved with the seam's resolution by 3.4 %
+/// (146,593, 143,074 and 147,983 mm³ at 128, 192 and 256 seam vertices; 128 and 256 agreed by
+/// chance). Beside the lobes' bays the seam is a saddle, where the circle's fans of graded
+/// triangles had no edge to bend along and locked in a slightly other shape on every mesh. With
+/// rows of vertices beside those samples (`simulate::sheet::saddle`): 146,264, 146,559 and
+/// 147,271 mm³, 0.7 % apart.
+#[test]
+fn test_issue_14_the_five_lobes_keep_their_volume_at_128_192_and_256_seam_vertices() {
+    let a = shapes::five_lobed();
+    let b = shapes::circle_for(&a);
+    let mut volumes = Vec::new();
+    for n in [128, 192, 256] {
+        let s = run(&a, &b, 0.0, n, 5000);
+        assert_eq!(promise(&s), Ok(()), "n {n}: {}", mesh_checks::report(&s));
+        volumes.push(volume(&s));
+    }
+    let (lo, hi) = volumes.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+    println!("volumes at 128, 192, 256: {volumes:.0?}");
+    assert!(hi / lo - 1.0 <= 1e-2, "wanted the volumes at 128, 192 and 256 seam vertices within 1 %, got {volumes:.0?}");
+}
+
+/// A smooth random blob r = 50(1 + Σ a cos(kθ + φ)) through 48 points, from its `(k, a, φ)`.
+fn harmonic_blob(h: &[(f64, f64, f64)]) -> Contour {
+    shapes::polar(48, |t| 50.0 * (1.0 + h.iter().map(|(k, a, ph)| a * (k * t + ph).cos()).sum::<f64>()))
+}
+
+/// The largest total angle at a seam vertex, both pieces' corners summed from `flat`: above
+/// 2π where the glued surface is a saddle.
+fn largest_seam_angle(s: &Simulation) -> f64 {
+    let mut total = std::collections::HashMap::new();
+    let seam: std::collections::HashSet<usize> = s.seam.iter().copied().collect();
+    for (t, tri) in s.triangles.iter().enumerate() {
+        for m in 0..3 {
+            if !seam.contains(&tri[m]) {
+                continue;
+            }
+            let f = s.flat[t];
+            let (o, p, q) = (f[m], f[(m + 1) % 3], f[(m + 2) % 3]);
+            let (u, v) = ([p[0] - o[0], p[1] - o[1]], [q[0] - o[0], q[1] - o[1]]);
+            *total.entry(tri[m]).or_insert(0.0) += (u[0] * v[1] - u[1] * v[0]).abs().atan2(u[0] * v[0] + u[1] * v[1]);
+        }
+    }
+    total.values().copied().fold(0.0, f64::max)
+}
+
+/// Regression: two smooth blobs (the survey's pairs 5 and 37 of seed 11) whose seam is a saddle
+/// where a bay of the second meets the first (the pieces' angles at a run of samples add up to
+/// 2π + 2–4°) ended strained by 1.38e-3 and 4.1e-3 at every bending weight down to the thinnest,
+/// a run of seam edges stretched on both pieces and the interior edges beside them compressed
+/// as much: the graded triangles there had no edge into the piece to bend along. With rows of
+/// vertices beside the saddle samples (`simulate::sheet::saddle`) both keep every promise.
+#[test]
+fn test_issue_14_two_blobs_meeting_in_a_saddle_keep_their_flat_lengths() {
+    let cases = [
+        (
+            "pair 5",
+            [(2.0, -0.077325, 2.5146501404541066), (3.0, 0.07081300000000001, 0.523929690024477), (4.0, -0.1079165, 0.174760516133893), (5.0, 0.029114400000000006, 1.772015336257323)],
+            [(2.0, 0.019037499999999985, 5.15343717302216), (3.0, -0.08730666666666666, 4.390551662580337), (4.0, 0.05523249999999999, 3.36985449261432), (5.0, 0.0570098, 3.9144998445965684)],
+            0.85,
+        ),
+        (
+            "pair 37",
+            [(2.0, 0.157188, 1.0199369045438478), (3.0, -0.048958999999999996, 1.2797277674398022), (4.0, -0.04889225, 5.245718315628707), (5.0, 0.08317699999999999, 4.014930278546527)],
+            [(2.0, -0.171201, 0.392868727702018), (3.0, 0.13690733333333335, 5.701073321210626), (4.0, 0.005892249999999988, 5.019152936637118), (5.0, -0.0485918, 2.593447567391446)],
+            0.69,
+        ),
+    ];
+    for (name, ha, hb, offset) in cases {
+        let a = harmonic_blob(&ha);
+        let b = shapes::with_perimeter(&harmonic_blob(&hb), shapes::perimeter(&a));
+        let s = run(&a, &b, offset, 256, 5000);
+        let excess = (largest_seam_angle(&s) - std::f64::consts::TAU).to_degrees();
+        println!("{name}: {} | largest seam angle 360° + {excess:.2}°", mesh_checks::report(&s));
+        assert!(excess > 1.0, "{name}: precondition: wanted a saddle on the seam (a total angle above 361°), got 360° + {excess:.2}°");
+        assert_eq!(promise(&s), Ok(()), "{name}: {}", mesh_checks::report(&s));
+    }
+}
+
 /// Mirror-symmetric input gives a mirror-symmetric form (requirement 3 of issue 14) also on the
 /// sheet path: the 1:2 ellipse with a dent of 5 % of its height (a concave stretch the convex
 /// path cannot solve) and a circle are symmetric about the line through both starts, so
@@ -421,12 +499,13 @@ fn test_issue_14_corners_glued_to_a_circle_do_not_fold_the_mesh_at_their_cone_po
 fn test_issue_14_an_isometric_creased_form_is_called_creased_not_stretched() {
     use dformer::simulate::Shortfall;
     let mut seen = Vec::new();
-    // The rounded star's seam samples cannot be isometric to 1e-3 (their floor is 1.07e-3 at
-    // 256), and it folds too; the L stopped after 20 steps is still stretched; the Pebble at 48
-    // seam vertices is its form on samples whose chords differ by more than 1e-3.
+    // The rounded star's seam samples cannot be isometric to 1e-3 (their floor is 1.89e-3 at
+    // 192), and it folds too (95°; at 256 its sharpest bend is 89.6°, a fold only on some
+    // meshes); the L stopped after 20 steps is still stretched; the Pebble at 48 seam vertices
+    // is its form on samples whose chords differ by more than 1e-3.
     let cases = [
         ("L hexagon", shapes::l_shape(), 256, 5000),
-        ("rounded star", shapes::rounded_star(), 256, 5000),
+        ("rounded star at 192", shapes::rounded_star(), 192, 5000),
         ("Pebble", shapes::pebble(), 256, 5000),
         ("L hexagon after 20 steps", shapes::l_shape(), 256, 20),
         ("Pebble at 48", shapes::pebble(), 48, 5000),
@@ -465,10 +544,11 @@ fn test_issue_14_an_isometric_creased_form_is_called_creased_not_stretched() {
 /// 256 seam vertices). Both turns are now seam vertices, walked as corners (`simulate::kink`),
 /// and the seam starts at the dip, 0.59 mm from the first anchor. Checked from `flat` alone:
 /// each seam edge's two lengths agree within 1e-3 at 256 (2e-3 at 128), and the sheets keep
-/// their flat lengths within 4e-3, do not cross, and agree in volume at 128 and 256 within 10 %
-/// (68,011 and 71,451 mm³ today). They still crease the circle, as the heart drawn with corner
-/// anchors does, so `converged` stays false, and a creased form moves with its mesh (see
-/// `simulate::sheet`).
+/// their flat lengths within 4e-3, do not cross, and agree in volume at 128 and 256 within 5 %
+/// (68,946 and 70,428 mm³ today; 68,011 and 71,451 before the rows of vertices beside the
+/// seam's saddles, `simulate::sheet::saddle`, which the heart's dip makes). At 128 they still
+/// crease the circle, as the heart drawn with corner anchors does (at 256 its sharpest bend is
+/// 88°, just under a fold), and a creased form moves with its mesh (see `simulate::sheet`).
 #[test]
 fn test_issue_14_a_heart_with_smooth_cusps_has_seam_vertices_on_them() {
     let a = shapes::heart();
@@ -499,7 +579,7 @@ fn test_issue_14_a_heart_with_smooth_cusps_has_seam_vertices_on_them() {
         volumes.push(volume(&s));
     }
     let apart = (volumes[0] / volumes[1] - 1.0).abs();
-    assert!(apart <= 0.1, "wanted the volumes at 128 and 256 within 10 %, got {:.0} and {:.0} mm³", volumes[0], volumes[1]);
+    assert!(apart <= 0.05, "wanted the volumes at 128 and 256 within 5 %, got {:.0} and {:.0} mm³", volumes[0], volumes[1]);
 }
 
 /// At 512 seam vertices the homotopy of a pair with a reflex corner crumpled: the twins' interior

@@ -32,7 +32,7 @@ pub struct FlatMesh {
 /// `None` when the polygon cannot be meshed (crossing or repeated samples) or the result is not
 /// a triangulated disk whose boundary is exactly the seam.
 pub fn mesh_piece(seam: &[[f64; 2]], max_area: f64) -> Option<FlatMesh> {
-    mesh_piece_with_fans(seam, max_area, &[])
+    mesh_piece_with_fans(seam, max_area, &[], &[])
 }
 
 /// Interior angle (radians, in (0, 2π)) of the counter-clockwise polygon `p` at vertex `k`.
@@ -49,8 +49,9 @@ pub fn interior_angle(p: &[[f64; 2]], k: usize) -> f64 {
 /// interior angle into equal parts of at most [`FAN_ANGLE`] (a ray point outside the polygon,
 /// beside a neighbouring reflex corner, is left out). The refinement keeps these vertices and
 /// may add more around them, so every triangle at such a vertex has its angle there at most
-/// [`FAN_ANGLE`].
-pub fn mesh_piece_with_fans(seam: &[[f64; 2]], max_area: f64, fans: &[usize]) -> Option<FlatMesh> {
+/// [`FAN_ANGLE`]. The points `inner` (inside the polygon, e.g. [`super::saddle::rows`]) are
+/// kept as vertices too.
+pub fn mesh_piece_with_fans(seam: &[[f64; 2]], max_area: f64, fans: &[usize], inner: &[[f64; 2]]) -> Option<FlatMesh> {
     let n = seam.len();
     if n < 3 || !(max_area > 0.0 && max_area.is_finite()) {
         return None;
@@ -80,6 +81,9 @@ pub fn mesh_piece_with_fans(seam: &[[f64; 2]], max_area: f64, fans: &[usize]) ->
             }
             cdt.insert(Point2::new(q[0], q[1])).ok()?;
         }
+    }
+    for q in inner {
+        cdt.insert(Point2::new(q[0], q[1])).ok()?;
     }
     let area = polygon_area(seam);
     let budget = ((8.0 * area / max_area) as usize).max(4 * n) + 1000;
@@ -186,7 +190,7 @@ mod tests {
             seam.extend((0..side).map(|k| [start[0] + dir[0] * k as f64, start[1] + dir[1] * k as f64]));
         }
         let corners = [0, side, 2 * side, 3 * side];
-        let m = mesh_piece_with_fans(&seam, 40.0, &corners).expect("a mesh");
+        let m = mesh_piece_with_fans(&seam, 40.0, &corners, &[]).expect("a mesh");
         let covered: f64 = m.tris.iter().map(|t| crate::simulate::metric::orient(m.pts[t[0]], m.pts[t[1]], m.pts[t[2]]) / 2.0).sum();
         assert!((covered - 1600.0).abs() < 1e-9 * 1600.0, "area wanted 1600, got {covered}");
         assert_eq!(&m.pts[..seam.len()], &seam[..], "seam samples kept in order");

@@ -38,6 +38,16 @@ impl SheetMesh {
     /// shorter than the mean seam step), with fans at the cone points ([`CONE_DEFECT`]); `None`
     /// if either cannot be meshed.
     pub fn new(pieces: &SeamPieces, interior: f64) -> Option<Self> {
+        Self::build(pieces, interior, &[])
+    }
+
+    /// [`SheetMesh::new`] with rows of vertices beside the seam samples `saddles`
+    /// ([`super::saddle`]): the mesh the thin sheet is relaxed on.
+    pub fn layered(pieces: &SeamPieces, interior: f64, saddles: &[usize]) -> Option<Self> {
+        Self::build(pieces, interior, saddles)
+    }
+
+    fn build(pieces: &SeamPieces, interior: f64, saddles: &[usize]) -> Option<Self> {
         let n = pieces.n;
         let step = pieces.flat[0].perimeter / n as f64;
         let edge = (interior * pieces.flat[0].perimeter).max(step);
@@ -48,7 +58,11 @@ impl SheetMesh {
                 (std::f64::consts::TAU - total).abs() > CONE_DEFECT
             })
             .collect();
-        let meshes: [FlatMesh; 2] = [mesh_piece_with_fans(&pieces.flat[0].pts, max_area, &cones)?, mesh_piece_with_fans(&pieces.flat[1].pts, max_area, &cones)?];
+        let mesh = |p: usize| {
+            let pts = &pieces.flat[p].pts;
+            mesh_piece_with_fans(pts, max_area, &cones, &super::saddle::rows(pts, saddles))
+        };
+        let meshes: [FlatMesh; 2] = [mesh(0)?, mesh(1)?];
         let ia = meshes[0].pts.len() - n;
         let total = n + ia + meshes[1].pts.len() - n;
         let global = |p: usize, v: usize| if p == 0 || v < n { v } else { v + ia };
