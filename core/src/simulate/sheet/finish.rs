@@ -25,10 +25,18 @@ pub fn max_bend(x: &[V3], shell: &Shell) -> f64 {
 }
 
 /// Whether the glued mesh is what a sheet can be: no fold inside a piece (a bend above
-/// [`FOLD_BEND`]) and no two triangles crossing. (It is a closed 2-manifold by construction:
-/// two meshed disks glued along their whole boundary.)
+/// [`FOLD_BEND`]), no two triangles crossing, and every directed edge on one triangle. (Two
+/// meshed disks glued along their whole boundary are a closed 2-manifold unless both have a
+/// chord between the same two seam samples, which [`SheetMesh::new`] splits; the heart glued to
+/// its mirror image was called converged with such a chord on four triangles.)
 pub fn sound(x: &[V3], shell: &Shell, faces: &[[usize; 3]]) -> bool {
-    max_bend(x, shell) <= FOLD_BEND && !faces_cross(x, faces)
+    max_bend(x, shell) <= FOLD_BEND && edges_once(faces) && !faces_cross(x, faces)
+}
+
+/// Whether no directed edge is on two triangles.
+fn edges_once(faces: &[[usize; 3]]) -> bool {
+    let mut seen = KeyMap::default();
+    faces.iter().all(|t| (0..3).all(|k| seen.insert(pair_key(t[k], t[(k + 1) % 3]), 0).is_none()))
 }
 
 /// Builds the output: vertices centred and outward, triangles in the surface's orientation,

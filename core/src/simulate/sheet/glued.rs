@@ -33,6 +33,25 @@ pub struct SheetMesh {
 /// answer (2.9e-2 strain), ends 9.6e-4 strained without crossing.
 pub const CONE_DEFECT: f64 = 25.0 * std::f64::consts::PI / 180.0;
 
+/// Tries at splitting the chords B shares with A ([`SheetMesh::new`]); each try re-meshes B.
+/// Congruent pieces glued as mirror images (the flat doubly covered form) share the chords of
+/// their tips: the heart with its mirror image had chord 127–130 in both at 256 seam vertices.
+pub const SHARED_CHORD_SPLITS: usize = 3;
+
+/// The edges of a meshed piece between two seam samples that are not seam neighbours, `(i, j)`
+/// with `i < j < n`, sorted.
+fn seam_chords(m: &FlatMesh, n: usize) -> Vec<(usize, usize)> {
+    let mut out: Vec<(usize, usize)> = m
+        .tris
+        .iter()
+        .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
+        .filter(|&(i, j)| j < n && j - i != 1 && !(i == 0 && j == n - 1))
+        .collect();
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
 impl SheetMesh {
     /// Meshes both pieces with interior edges of about `interior` times the perimeter (never
     /// shorter than the mean seam step), with fans at the cone points ([`CONE_DEFECT`]); `None`
@@ -58,11 +77,31 @@ impl SheetMesh {
                 (std::f64::consts::TAU - total).abs() > CONE_DEFECT
             })
             .collect();
-        let mesh = |p: usize| {
+        let mesh = |p: usize, split: &[[f64; 2]]| {
             let pts = &pieces.flat[p].pts;
-            mesh_piece_with_fans(pts, max_area, &cones, &super::saddle::rows(pts, saddles))
+            let mut inner = super::saddle::rows(pts, saddles);
+            inner.extend_from_slice(split);
+            mesh_piece_with_fans(pts, max_area, &cones, &inner)
         };
-        let meshes: [FlatMesh; 2] = [mesh(0)?, mesh(1)?];
+        // A chord between the same two seam samples in both pieces would bound four triangles:
+        // B's is split at its midpoint ([`SHARED_CHORD_SPLITS`]).
+        let a = mesh(0, &[])?;
+        let in_a = seam_chords(&a, n);
+        let mut split = Vec::new();
+        let mut b = mesh(1, &split)?;
+        for _ in 0..SHARED_CHORD_SPLITS {
+            let shared: Vec<(usize, usize)> = seam_chords(&b, n).into_iter().filter(|c| in_a.contains(c)).collect();
+            if shared.is_empty() {
+                break;
+            }
+            let q = &pieces.flat[1].pts;
+            split.extend(shared.iter().map(|&(i, j)| [(q[i][0] + q[j][0]) / 2.0, (q[i][1] + q[j][1]) / 2.0]));
+            b = mesh(1, &split)?;
+        }
+        if seam_chords(&b, n).iter().any(|c| in_a.contains(c)) {
+            return None;
+        }
+        let meshes: [FlatMesh; 2] = [a, b];
         let ia = meshes[0].pts.len() - n;
         let total = n + ia + meshes[1].pts.len() - n;
         let global = |p: usize, v: usize| if p == 0 || v < n { v } else { v + ia };
