@@ -18,7 +18,8 @@
 //!    Also counted: answers called converged with an edge more than 1e-3 off its flat length (the
 //!    seam samples' floor at tight corners, see `simulate::density`).
 //! 2. *Organic pairs*: smooth random blobs r = 50(1 + Σ a_k cos(kθ + φ_k)), k = 2…5, glued to a
-//!    circle at a random offset (a fixed xorshift seed), and to another blob, counted by
+//!    circle at a random offset (a fixed xorshift seed), and to another blob; and the Pebble,
+//!    the kidney and the smooth heart each with a copy of itself at six offsets; counted by
 //!    `stats.shortfall`.
 //! 3. *Bays*: an 80 mm L whose notch deepens from 10 to 40 mm, with a circle: where the form
 //!    starts to crease (the panel's advice for a creased form rests on this).
@@ -172,6 +173,13 @@ fn organic_pairs() {
         solve(&a, &b, (i as f64 * 0.37) % 1.0)
     }));
     println!("   Two organic blobs, {count} random pairs (seed 11), {N} seam vertices: {tally:?}, slowest {worst_ms:.0} ms native");
+    // One drawing duplicated and turned, the classic D-form of two equal pieces: the pieces are
+    // congruent, not mirror images, so only offsets other than the mirror gluing inflate.
+    for (name, a) in [("Pebble", shapes::pebble()), ("kidney", shapes::kidney()), ("smooth heart", shapes::heart())] {
+        let offsets = [1, 3, 5, 8, 11, 13];
+        let (tally, worst_ms) = tally_of(offsets.iter().map(|&k| solve(&a, &a, k as f64 / 16.0)));
+        println!("   The {name} with its copy at offsets 1, 3, 5, 8, 11, 13/16: {tally:?}, slowest {worst_ms:.0} ms native");
+    }
 }
 
 fn bays() {
