@@ -44,6 +44,22 @@ pub fn interior_angle(p: &[[f64; 2]], k: usize) -> f64 {
     if t <= 0.0 { t + std::f64::consts::TAU } else { t }
 }
 
+/// Mean length of the two seam edges at vertex `k` of the polygon `p`.
+pub fn seam_step(p: &[[f64; 2]], k: usize) -> f64 {
+    let n = p.len();
+    let (a, b, c) = (p[(k + n - 1) % n], p[k], p[(k + 1) % n]);
+    0.5 * ((a[0] - b[0]).hypot(a[1] - b[1]) + (c[0] - b[0]).hypot(c[1] - b[1]))
+}
+
+/// The closed polygon `p` as a kurbo path, for kurbo's point-in-shape test (non-zero winding).
+pub fn outline(p: &[[f64; 2]]) -> kurbo::BezPath {
+    let n = p.len();
+    kurbo::BezPath::from_vec((0..=n).map(|k| {
+        let q = kurbo::Point::new(p[k % n][0], p[k % n][1]);
+        if k == 0 { kurbo::PathEl::MoveTo(q) } else { kurbo::PathEl::LineTo(q) }
+    }).chain([kurbo::PathEl::ClosePath]).collect())
+}
+
 /// [`mesh_piece`] with a fan of extra vertices inside the piece around each seam vertex of
 /// `fans`: one at the mean of its two seam steps' lengths on every ray that splits the vertex's
 /// interior angle into equal parts of at most [`FAN_ANGLE`] (a ray point outside the polygon,
@@ -62,14 +78,10 @@ pub fn mesh_piece_with_fans(seam: &[[f64; 2]], max_area: f64, fans: &[usize], in
     if cdt.num_vertices() != n || cdt.num_constraints() != n {
         return None;
     }
-    // The sample polygon as a path, for kurbo's point-in-shape test (non-zero winding).
-    let outline = (!fans.is_empty()).then(|| kurbo::BezPath::from_vec((0..=n).map(|k| {
-        let p = kurbo::Point::new(seam[k % n][0], seam[k % n][1]);
-        if k == 0 { kurbo::PathEl::MoveTo(p) } else { kurbo::PathEl::LineTo(p) }
-    }).chain([kurbo::PathEl::ClosePath]).collect()));
+    let outline = (!fans.is_empty()).then(|| outline(seam));
     for &k in fans {
-        let (a, b, c) = (seam[(k + n - 1) % n], seam[k], seam[(k + 1) % n]);
-        let h = 0.5 * ((a[0] - b[0]).hypot(a[1] - b[1]) + (c[0] - b[0]).hypot(c[1] - b[1]));
+        let (b, c) = (seam[k], seam[(k + 1) % n]);
+        let h = seam_step(seam, k);
         let angle = interior_angle(seam, k);
         let parts = (angle / FAN_ANGLE).ceil() as usize;
         let start = (c[1] - b[1]).atan2(c[0] - b[0]);

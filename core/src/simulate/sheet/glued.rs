@@ -77,29 +77,23 @@ impl SheetMesh {
                 (std::f64::consts::TAU - total).abs() > CONE_DEFECT
             })
             .collect();
-        let mesh = |p: usize, split: &[[f64; 2]]| {
-            let pts = &pieces.flat[p].pts;
-            let mut inner = super::saddle::rows(pts, saddles);
-            inner.extend_from_slice(split);
-            mesh_piece_with_fans(pts, max_area, &cones, &inner)
-        };
+        let [pa, pb] = [&pieces.flat[0].pts, &pieces.flat[1].pts];
+        let a = mesh_piece_with_fans(pa, max_area, &cones, &super::saddle::rows(pa, saddles))?;
         // A chord between the same two seam samples in both pieces would bound four triangles:
         // B's is split at its midpoint ([`SHARED_CHORD_SPLITS`]).
-        let a = mesh(0, &[])?;
         let in_a = seam_chords(&a, n);
-        let mut split = Vec::new();
-        let mut b = mesh(1, &split)?;
-        for _ in 0..SHARED_CHORD_SPLITS {
-            let shared: Vec<(usize, usize)> = seam_chords(&b, n).into_iter().filter(|c| in_a.contains(c)).collect();
+        let mut inner = super::saddle::rows(pb, saddles);
+        let mut b = mesh_piece_with_fans(pb, max_area, &cones, &inner)?;
+        for tries in 0.. {
+            let shared: Vec<(usize, usize)> = seam_chords(&b, n).into_iter().filter(|c| in_a.binary_search(c).is_ok()).collect();
             if shared.is_empty() {
                 break;
             }
-            let q = &pieces.flat[1].pts;
-            split.extend(shared.iter().map(|&(i, j)| [(q[i][0] + q[j][0]) / 2.0, (q[i][1] + q[j][1]) / 2.0]));
-            b = mesh(1, &split)?;
-        }
-        if seam_chords(&b, n).iter().any(|c| in_a.contains(c)) {
-            return None;
+            if tries == SHARED_CHORD_SPLITS {
+                return None;
+            }
+            inner.extend(shared.iter().map(|&(i, j)| [(pb[i][0] + pb[j][0]) / 2.0, (pb[i][1] + pb[j][1]) / 2.0]));
+            b = mesh_piece_with_fans(pb, max_area, &cones, &inner)?;
         }
         let meshes: [FlatMesh; 2] = [a, b];
         let ia = meshes[0].pts.len() - n;

@@ -26,8 +26,9 @@
 //! homotopy 60 % strained).
 
 use super::glued::CONE_DEFECT;
-use super::flatmesh::interior_angle;
+use super::flatmesh::{interior_angle, outline, seam_step};
 use crate::simulate::seam::SeamPieces;
+use kurbo::{Line, ParamCurveNearest, Point, Shape};
 use std::f64::consts::TAU;
 
 /// Smallest angle excess per unit of seam length, times `R = L/2π`, of a saddle sample: `0.36`
@@ -50,16 +51,9 @@ pub fn samples(pieces: &SeamPieces) -> Vec<usize> {
     (0..n)
         .filter(|&k| {
             let excess = interior_angle(a, k) + interior_angle(&pieces.flat[1].pts, k) - TAU;
-            excess > SADDLE_CURVATURE * step(a, k) / radius && excess < CONE_DEFECT
+            excess > SADDLE_CURVATURE * seam_step(a, k) / radius && excess < CONE_DEFECT
         })
         .collect()
-}
-
-/// Mean length of the two seam edges at sample `k` of the polygon `p`.
-fn step(p: &[[f64; 2]], k: usize) -> f64 {
-    let n = p.len();
-    let (a, b, c) = (p[(k + n - 1) % n], p[k], p[(k + 1) % n]);
-    0.5 * ((a[0] - b[0]).hypot(a[1] - b[1]) + (c[0] - b[0]).hypot(c[1] - b[1]))
 }
 
 /// The extra vertices inside the counter-clockwise polygon `seam` at the samples `at`: on the
@@ -71,14 +65,15 @@ fn step(p: &[[f64; 2]], k: usize) -> f64 {
 pub fn rows(seam: &[[f64; 2]], at: &[usize]) -> Vec<[f64; 2]> {
     let n = seam.len();
     let mean = (0..n).map(|j| (seam[j][0] - seam[(j + 1) % n][0]).hypot(seam[j][1] - seam[(j + 1) % n][1])).sum::<f64>() / n as f64;
+    let shape = outline(seam);
     let mut out = Vec::new();
     for &k in at {
         let (b, c) = (seam[k], seam[(k + 1) % n]);
-        let h = step(seam, k).max(mean);
+        let h = seam_step(seam, k).max(mean);
         let t = (c[1] - b[1]).atan2(c[0] - b[0]) + interior_angle(seam, k) / 2.0;
         for m in ROWS {
             let q = [b[0] + m * h * t.cos(), b[1] + m * h * t.sin()];
-            if inside(seam, q) && (0..n).all(|j| distance_to_edge(q, seam[j], seam[(j + 1) % n]) > 0.5 * h) {
+            if shape.contains(point(q)) && (0..n).all(|j| distance_to_edge(q, seam[j], seam[(j + 1) % n]) > 0.5 * h) {
                 out.push(q);
             }
         }
@@ -86,25 +81,13 @@ pub fn rows(seam: &[[f64; 2]], at: &[usize]) -> Vec<[f64; 2]> {
     out
 }
 
-/// Whether `q` is inside the polygon (even–odd crossings of a ray to +x).
-fn inside(p: &[[f64; 2]], q: [f64; 2]) -> bool {
-    let n = p.len();
-    let mut crossings = false;
-    for j in 0..n {
-        let (a, b) = (p[j], p[(j + 1) % n]);
-        if (a[1] > q[1]) != (b[1] > q[1]) && q[0] < a[0] + (q[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]) {
-            crossings = !crossings;
-        }
-    }
-    crossings
+fn point(q: [f64; 2]) -> Point {
+    Point::new(q[0], q[1])
 }
 
 /// Distance from `q` to the segment `a–b`.
 fn distance_to_edge(q: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let l2 = d[0] * d[0] + d[1] * d[1];
-    let t = if l2 > 0.0 { (((q[0] - a[0]) * d[0] + (q[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0) } else { 0.0 };
-    (q[0] - a[0] - t * d[0]).hypot(q[1] - a[1] - t * d[1])
+    Line::new(point(a), point(b)).nearest(point(q), 0.0).distance_sq.sqrt()
 }
 
 #[cfg(test)]
@@ -121,7 +104,7 @@ mod tests {
             let t = TAU * k as f64 / n as f64;
             [50.0 * t.cos(), 50.0 * t.sin()]
         }).collect();
-        // r = 50(1 − 0.12·cos 3θ·…) concave around θ = 0 only: a bump of the radius inward there.
+        // r = 50 − 8·exp(−(θ/0.3)²): concave around θ = 0 only, a dent of the radius there.
         let bay: Vec<[f64; 2]> = (0..n).map(|k| {
             let t = TAU * k as f64 / n as f64;
             let d = (t + std::f64::consts::PI).rem_euclid(TAU) - std::f64::consts::PI;
@@ -142,9 +125,9 @@ mod tests {
             let q = rows(pts, &at);
             assert!(q.len() >= at.len(), "piece {p}: wanted a row at each of {} samples, got {} points", at.len(), q.len());
             for v in q {
-                assert!(inside(pts, v), "piece {p}: {v:?} is outside");
+                assert!(outline(pts).contains(point(v)), "piece {p}: {v:?} is outside");
                 let near = (0..n).map(|j| distance_to_edge(v, pts[j], pts[(j + 1) % n])).fold(f64::INFINITY, f64::min);
-                assert!(near > 0.5 * step(pts, 0) * 0.9, "piece {p}: {v:?} is {near:.3} mm from the seam");
+                assert!(near > 0.5 * seam_step(pts, 0) * 0.9, "piece {p}: {v:?} is {near:.3} mm from the seam");
             }
         }
     }
