@@ -265,20 +265,7 @@ fn harmonic_blob(h: &[(f64, f64, f64)]) -> Contour {
 /// The largest total angle at a seam vertex, both pieces' corners summed from `flat`: above
 /// 2π where the glued surface is a saddle.
 fn largest_seam_angle(s: &Simulation) -> f64 {
-    let mut total = std::collections::HashMap::new();
-    let seam: std::collections::HashSet<usize> = s.seam.iter().copied().collect();
-    for (t, tri) in s.triangles.iter().enumerate() {
-        for m in 0..3 {
-            if !seam.contains(&tri[m]) {
-                continue;
-            }
-            let f = s.flat[t];
-            let (o, p, q) = (f[m], f[(m + 1) % 3], f[(m + 2) % 3]);
-            let (u, v) = ([p[0] - o[0], p[1] - o[1]], [q[0] - o[0], q[1] - o[1]]);
-            *total.entry(tri[m]).or_insert(0.0) += (u[0] * v[1] - u[1] * v[0]).abs().atan2(u[0] * v[0] + u[1] * v[1]);
-        }
-    }
-    total.values().copied().fold(0.0, f64::max)
+    seam_angles(s).into_iter().map(|(_, a)| a).fold(0.0, f64::max)
 }
 
 /// Regression: two smooth blobs (the survey's pairs 5 and 37 of seed 11) whose seam is a saddle
@@ -467,6 +454,11 @@ fn test_issue_14_rounded_star_at_128_seam_vertices_is_the_pillow_of_256() {
 /// Seam vertices where the glued surface is a cone point of at least `defect` (radians): the
 /// angles of all triangles at the vertex, from `flat`, sum to 2π ± more than `defect`.
 fn cone_points(s: &Simulation, defect: f64) -> Vec<usize> {
+    seam_angles(s).into_iter().filter(|&(_, a)| (std::f64::consts::TAU - a).abs() > defect).map(|(v, _)| v).collect()
+}
+
+/// Each seam vertex and its total angle: its triangles' corners there, both pieces', from `flat`.
+fn seam_angles(s: &Simulation) -> Vec<(usize, f64)> {
     let mut total = vec![0.0; s.vertices.len()];
     for (t, f) in s.triangles.iter().zip(&s.flat) {
         for k in 0..3 {
@@ -475,7 +467,7 @@ fn cone_points(s: &Simulation, defect: f64) -> Vec<usize> {
             total[t[k]] += (u[0] * v[1] - u[1] * v[0]).abs().atan2(u[0] * v[0] + u[1] * v[1]);
         }
     }
-    s.seam.iter().copied().filter(|&v| (std::f64::consts::TAU - total[v]).abs() > defect).collect()
+    s.seam.iter().map(|&v| (v, total[v])).collect()
 }
 
 /// A corner glued to a smooth stretch is a cone point of the form. The refinement met it with
