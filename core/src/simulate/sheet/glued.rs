@@ -47,8 +47,7 @@ fn seam_chords(m: &FlatMesh, n: usize) -> Vec<(usize, usize)> {
         .flat_map(|t| (0..3).map(move |k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]))))
         .filter(|&(i, j)| j < n && j - i != 1 && !(i == 0 && j == n - 1))
         .collect();
-    out.sort_unstable();
-    out.dedup();
+    crate::order::sort_dedup_pairs(&mut out);
     out
 }
 
