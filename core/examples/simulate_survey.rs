@@ -19,8 +19,8 @@
 //!    seam samples' floor at tight corners, see `simulate::density`).
 //! 2. *Organic pairs*: smooth random blobs r = 50(1 + Σ a_k cos(kθ + φ_k)), k = 2…5, glued to a
 //!    circle at a random offset (a fixed xorshift seed), and to another blob; and the Pebble,
-//!    the kidney and the smooth heart each with a copy of itself at six offsets; counted by
-//!    `stats.shortfall`.
+//!    the kidney and the smooth heart each with a copy of itself at six offsets, the blob and the
+//!    kidney each with its mirror image at the same six; counted by `stats.shortfall`.
 //! 3. *Bays*: an 80 mm L whose notch deepens from 10 to 40 mm, with a circle: where the form
 //!    starts to crease (the panel's advice for a creased form rests on this).
 //!
@@ -179,6 +179,14 @@ fn organic_pairs() {
         let offsets = [1, 3, 5, 8, 11, 13];
         let (tally, worst_ms) = tally_of(offsets.iter().map(|&k| solve(&a, &a, k as f64 / 16.0)));
         println!("   The {name} with its copy at offsets 1, 3, 5, 8, 11, 13/16: {tally:?}, slowest {worst_ms:.0} ms native");
+    }
+    // A piece with its mirror image (the drawing flipped): offset 0 folds flat, and at small
+    // offsets the two pieces' bays meet, where the sheet locks unless refined there
+    // (`simulate::sheet::adapt`).
+    for (name, a) in [("blob", shapes::blob()), ("kidney", shapes::kidney())] {
+        let offsets = [1, 3, 5, 8, 11, 13];
+        let (tally, worst_ms) = tally_of(offsets.iter().map(|&k| solve(&a, &shapes::mirrored(&a), k as f64 / 16.0)));
+        println!("   The {name} with its mirror image at offsets 1, 3, 5, 8, 11, 13/16: {tally:?}, slowest {worst_ms:.0} ms native");
     }
 }
 

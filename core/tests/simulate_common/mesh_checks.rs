@@ -229,3 +229,40 @@ pub fn report(s: &Simulation) -> String {
         s.stats.converged
     )
 }
+
+/// What a converged answer promises (requirement 1 of issue 14), checked independently.
+pub fn promise(s: &Simulation) -> Result<(), String> {
+    let strain = max_edge_strain(s);
+    if strain > 1e-3 {
+        return Err(format!("edge strain {strain:.2e} > 1e-3"));
+    }
+    closed_manifold(s)?;
+    let bend = max_bend_inside(s);
+    if bend > std::f64::consts::FRAC_PI_2 {
+        return Err(format!("a fold of {:.1}° inside a piece", bend.to_degrees()));
+    }
+    let crossings = self_intersections(s, 1e-9);
+    if !crossings.is_empty() {
+        return Err(format!("{} pairs of crossing triangles, first {:?}", crossings.len(), crossings[0]));
+    }
+    Ok(())
+}
+
+/// Each seam vertex and its total angle: its triangles' corners there, both pieces', from `flat`.
+pub fn seam_angles(s: &Simulation) -> Vec<(usize, f64)> {
+    let mut total = vec![0.0; s.vertices.len()];
+    for (t, f) in s.triangles.iter().zip(&s.flat) {
+        for k in 0..3 {
+            let (o, a, b) = (f[k], f[(k + 1) % 3], f[(k + 2) % 3]);
+            let (u, v) = ([a[0] - o[0], a[1] - o[1]], [b[0] - o[0], b[1] - o[1]]);
+            total[t[k]] += (u[0] * v[1] - u[1] * v[0]).abs().atan2(u[0] * v[0] + u[1] * v[1]);
+        }
+    }
+    s.seam.iter().map(|&v| (v, total[v])).collect()
+}
+
+/// The largest total angle at a seam vertex, both pieces' corners summed from `flat`: above
+/// 2π where the glued surface is a saddle.
+pub fn largest_seam_angle(s: &Simulation) -> f64 {
+    seam_angles(s).into_iter().map(|(_, a)| a).fold(0.0, f64::max)
+}

@@ -56,16 +56,22 @@ impl SheetMesh {
     /// shorter than the mean seam step), with fans at the cone points ([`CONE_DEFECT`]); `None`
     /// if either cannot be meshed.
     pub fn new(pieces: &SeamPieces, interior: f64) -> Option<Self> {
-        Self::build(pieces, interior, &[])
+        Self::build(pieces, interior, &[], &[Vec::new(), Vec::new()])
     }
 
     /// [`SheetMesh::new`] with rows of vertices beside the seam samples `saddles`
     /// ([`super::saddle`]): the mesh the thin sheet is relaxed on.
     pub fn layered(pieces: &SeamPieces, interior: f64, saddles: &[usize]) -> Option<Self> {
-        Self::build(pieces, interior, saddles)
+        Self::build(pieces, interior, saddles, &[Vec::new(), Vec::new()])
     }
 
-    fn build(pieces: &SeamPieces, interior: f64, saddles: &[usize]) -> Option<Self> {
+    /// [`SheetMesh::layered`] with the points `extra[p]` (inside piece p) kept as vertices too:
+    /// the mesh refined where the sheet locked ([`super::adapt`]).
+    pub fn refined(pieces: &SeamPieces, interior: f64, saddles: &[usize], extra: &[Vec<[f64; 2]>; 2]) -> Option<Self> {
+        Self::build(pieces, interior, saddles, extra)
+    }
+
+    fn build(pieces: &SeamPieces, interior: f64, saddles: &[usize], extra: &[Vec<[f64; 2]>; 2]) -> Option<Self> {
         let n = pieces.n;
         let step = pieces.flat[0].perimeter / n as f64;
         let edge = (interior * pieces.flat[0].perimeter).max(step);
@@ -77,11 +83,12 @@ impl SheetMesh {
             })
             .collect();
         let [pa, pb] = [&pieces.flat[0].pts, &pieces.flat[1].pts];
-        let a = mesh_piece_with_fans(pa, max_area, &cones, &super::saddle::rows(pa, saddles))?;
+        let inner = |p: &[[f64; 2]], k: usize| [super::saddle::rows(p, saddles), extra[k].clone()].concat();
+        let a = mesh_piece_with_fans(pa, max_area, &cones, &inner(pa, 0))?;
         // A chord between the same two seam samples in both pieces would bound four triangles:
         // B's is split at its midpoint ([`SHARED_CHORD_SPLITS`]).
         let in_a = seam_chords(&a, n);
-        let mut inner = super::saddle::rows(pb, saddles);
+        let mut inner = inner(pb, 1);
         let mut b = mesh_piece_with_fans(pb, max_area, &cones, &inner)?;
         for tries in 0.. {
             let shared: Vec<(usize, usize)> = seam_chords(&b, n).into_iter().filter(|c| in_a.binary_search(c).is_ok()).collect();

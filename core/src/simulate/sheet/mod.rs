@@ -81,8 +81,15 @@
 //! blobs locked strained at 9 of 120 random gluings (2 with them), and the five lobes with a
 //! circle moved by 3.4 % between 128, 192 and 256 seam vertices (0.7 % with them).
 //!
+//! *Locks.* Where both pieces are concave at one place (two blobs whose bays meet, a piece with
+//! its mirror image at a small offset) the rows do not free the sheet, and a few edges stay
+//! stretched at every bending weight. Such a sheet is refined where it stays stretched and
+//! thinned again ([`adapt`]): of 240 random pairs of two blobs, the 6 that ended stretched (by
+//! 1.0–4.1e-3) now converge, and so do the kidney and the blob with their mirror images at 1/16.
+//!
 //! - [`flatmesh`]: each piece meshed by constrained Delaunay refinement, seam samples kept;
 //! - [`saddle`]: the rows of vertices beside the seam where it is a saddle;
+//! - [`adapt`]: the mesh refined where the thin sheet stays stretched;
 //! - [`glued`]: the two meshes glued on the seam, and the shell's terms on them;
 //! - [`hinge`]: the dihedral angle of two triangles and its gradient;
 //! - [`shell`]: the energy and its Levenberg–Marquardt minimization;
@@ -93,6 +100,7 @@
 //! - [`finish`]: soundness (folds, crossings), the result as a [`crate::simulate::Simulation`]
 //!   and its stats.
 
+pub mod adapt;
 pub mod finish;
 pub mod flatmesh;
 pub mod glued;
@@ -228,8 +236,9 @@ pub const STALL_ABOVE: f64 = 10.0;
 pub const STALL_DROP: f64 = 0.01;
 
 /// Stages of a non-convex pair's solve, for [`crate::simulate::progress`]: the convex path's
-/// first pass, the homotopy's steps and the thinning's stages.
-pub const STAGES: usize = 1 + HOMOTOPY_STEPS + SCHEDULE.len();
+/// first pass, the homotopy's steps, the thinning's stages and the rounds of refinement where
+/// the sheet locks ([`adapt`]).
+pub const STAGES: usize = 1 + HOMOTOPY_STEPS + SCHEDULE.len() + adapt::ROUNDS;
 
 /// What a relaxation did.
 #[derive(Debug, Clone)]
@@ -439,6 +448,7 @@ pub fn simulate(pieces: &SeamPieces, iterations: usize, budget: usize, report: &
     let saddles = saddle::samples(pieces);
     let Some(mesh) = SheetMesh::layered(pieces, INTERIOR_EDGE, &saddles) else { return Outcome::Unmeshed };
     let Some((shell, r)) = follow(pieces, &mesh, !saddles.is_empty(), budget, report) else { return Outcome::NeedsStart };
+    let (mesh, shell, r) = adapt::unlock(pieces, &saddles, mesh, shell, r, budget, report);
     Outcome::Sheet(finish::simulation(pieces, &mesh, &shell, &r.x, iterations + r.steps, r.converged), r.max_strain)
 }
 
