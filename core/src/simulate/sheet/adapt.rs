@@ -1,35 +1,54 @@
-//! Refinement where the thin sheet locks: the mesh made finer at the triangles whose edges stay
-//! stretched, and the sheet thinned again on it.
+//! Refinement where the thin sheet locks: the mesh made finer at the triangles that hold it,
+//! and the sheet thinned again on it.
 //!
 //! A linear triangle held to 1e-3 strain bends isometrically only about its own edges
-//! (membrane locking, see [`super`]): where the developable sheet must bend along a line the
-//! mesh has no edge for, a few edges stay strained at every bending weight. The saddle rows
-//! ([`super::saddle`]) give the mesh such edges where one piece's bay meets the other; where
-//! both pieces are concave at one place (two organic blobs whose bays meet, a piece with its
-//! mirror image at a small offset) they do not suffice: the kidney with its mirror image at 1/16
-//! of its perimeter ended 3.4e-3 strained, the blob with its mirror image 3.1e-3, with no fold
-//! and no crossing. A uniformly finer mesh frees such pairs at many times the cost (2 seam steps
-//! instead of 5: 12 times the time).
+//! (membrane locking, see [`super`]), and the mesh can hold the sheet in two ways ([`Lock`]):
 //!
-//! So the refinement is a-posteriori and local, as in adaptive finite elements: every triangle
-//! with an edge strained beyond [`MARK`] of the target gets a vertex at its centroid, both pieces
-//! are meshed again with those vertices kept (the Delaunay refinement grades the triangles
-//! around them), the sheet's shape is carried onto the new mesh ([`super::refine::carry`]) and
-//! thinned again from [`RESTART_KB`]; up to [`ROUNDS`] rounds, each adding the sheet's strained
-//! triangles of the round before, while they stay few ([`GROWTH`]).
+//! - *Stretched.* Where the developable sheet must bend along a line the mesh has no edge for, a
+//!   few edges stay strained at every bending weight. The saddle rows ([`super::saddle`]) give
+//!   the mesh such edges where one piece's bay meets the other; where both pieces are concave at
+//!   one place (two organic blobs whose bays meet, a piece with its mirror image at a small
+//!   offset) they do not suffice: the kidney with its mirror image at 1/16 of its perimeter
+//!   ended 3.4e-3 strained, the blob with its mirror image 3.1e-3, with no fold and no crossing.
+//! - *Folded.* On a smooth pair (no cone point on the seam) a line of high curvature bends by
+//!   60–110° between neighbouring triangles, and where the sharpest passes 90° the answer was
+//!   called creased: the kidney with a circle at 128 seam vertices (101°), 15 of 240 random
+//!   pairs of two blobs (91–103°). Paper creases only where it is forced to (a reflex corner or a
+//!   cusp meeting the other piece: the L's crease stays at 116–125° however the mesh is refined),
+//!   so on a smooth pair such a bend is the mesh's, and a finer mesh along the line shares it
+//!   among more edges. Pairs with a cone point are not refined: their creases are the form's.
 //!
-//! Measured at 256 seam vertices, native, on the 11 pairs that ended stretched by less than 2e-2
-//! among 240 random pairs of two blobs (the survey's, seeds 11, 23, 5, 31, 47 and 59) and the
-//! blob, kidney, five lobes, Pebble, drawn heart and smooth heart each with its copy and with its
-//! mirror image at 1, 3, 5, 8, 11 and 13/16: 10 converge, in 0.5–1.6 s instead of 0.3–0.6 (the
-//! kidney with its mirror image at 5/16, 1.5e-2 strained with crossing sheets, has too many
-//! strained triangles to be a lock). Their volumes move by 0.03–1.1 %: the same equilibrium,
-//! now isometric. No other pair of those 312 is touched (each converged, folded or ended more
-//! strained). Tried and not kept: thinning again from the first stage (1e-5; the blob with its
-//! mirror image then moved by 3.3 %), or from 1e-7 (the blob with its mirror image stayed
-//! locked); marking at the target itself (8 of 11) or a quarter of it (8); two rounds (9).
+//! A uniformly finer mesh frees such pairs at many times the cost (2 seam steps instead of 5:
+//! 12 times the time). So the refinement is a-posteriori and local, as in adaptive finite
+//! elements: every triangle with an edge strained beyond [`MARK`] of the target, or beside an
+//! edge bent by more than [`BEND_MARK`], gets a vertex at its centroid; both pieces are meshed
+//! again with those vertices kept (the Delaunay refinement grades the triangles around them),
+//! the sheet's shape is carried onto the new mesh ([`super::refine::carry`]) and thinned again,
+//! a stretched sheet from [`RESTART_KB`], a folded one from the stage it folded at; up to
+//! [`ROUNDS`] rounds, each adding the marks of the round before, while they stay few
+//! ([`GROWTH`]). A folded sheet's answer changes only when a round converges.
+//!
+//! Measured at 256 seam vertices, native, on 312 pairs: 240 random pairs of two blobs (the
+//! survey's generator, seeds 11, 23, 5, 31, 47 and 59), and the blob, kidney, five lobes,
+//! Pebble, drawn heart and smooth heart each with its copy and with its mirror image at 1, 3, 5,
+//! 8, 11 and 13/16. 268 converged before, 292 now; of the two blobs 238 of 240 (219). Of the 11
+//! stretched by less than 2e-2, 10 converge (the kidney with its mirror image at 5/16, 1.5e-2
+//! strained through itself, has too many strained triangles to be a lock), in 0.5–1.6 s instead
+//! of 0.3–0.6; of the 16 smooth folds, 14, in 0.36–0.63 s instead of 0.28–0.49. Volumes move by
+//! 0.0–1.1 %: the same equilibrium, now isometric or unfolded. No other pair changes. In WASM the
+//! kidney with a circle (folded by 98°) converges at 87° in 0.88 s instead of 0.63.
+//!
+//! Tried and not kept: thinning a stretched sheet again from the first stage (1e-5; the blob
+//! with its mirror image then moved by 3.3 %) or from 1e-7 (stayed locked); marking at the
+//! target itself (8 of the 11) or a quarter of it (8); two rounds (9). A folded sheet thinned
+//! again from 1e-6 converged 15 of 16, but in WASM pairs with a cone point then took up to 1.7 s
+//! (the heart with a circle, 0.39 before) for three futile rounds; marking at 45° converged 13.
 
-use super::glued::SheetMesh;
+use super::glued::{cone_samples, SheetMesh};
+use super::{finish, hinge};
+use crate::order::pair_key;
+use crate::simulate::checks::{faces_cross, FOLD_BEND};
+use crate::simulate::metric::KeyMap;
 use super::shell::Shell;
 use super::{refine, thin, Relaxed, SCHEDULE, STRAIN_TARGET};
 use crate::simulate::progress::Reporter;
@@ -43,14 +62,21 @@ pub const ROUNDS: usize = 3;
 /// [`STRAIN_TARGET`]: the edges just below the target lock the sheet as well.
 pub const MARK: f64 = 0.5;
 
-/// The bending weight (`kb / R²`, [`SCHEDULE`]) the thinning starts again from on the finer
-/// mesh: thin enough to keep the locked sheet's equilibrium, thick enough to let it move.
+/// The bending weight (`kb / R²`, [`SCHEDULE`]) a stretched sheet's thinning starts again from
+/// on the finer mesh: thin enough to keep the locked sheet's equilibrium, thick enough to let it
+/// move. (A folded sheet starts again from the stage it folded at: it is within the target
+/// there, and thinner stages only sharpen a fold.)
 pub const RESTART_KB: f64 = 1e-6;
 
 /// Largest strain (over [`STRAIN_TARGET`]) of a sheet that is refined: one strained by percents
 /// is not locked but on a wrong equilibrium or through itself (the bound of
 /// [`super::PATIENT_ABOVE`]).
 pub const BELOW: f64 = super::PATIENT_ABOVE;
+
+/// A folded sheet is refined at both triangles of every edge bent by more than this (radians):
+/// the hinges beside the sharpest bend on a smooth sheet's high-curvature line, which share it
+/// once the mesh is finer there.
+pub const BEND_MARK: f64 = 60.0 * std::f64::consts::PI / 180.0;
 
 /// Largest share of the mesh's vertices a round may add: more strained triangles than that are
 /// no local lock.
@@ -74,30 +100,102 @@ pub fn strained_centroids(mesh: &SheetMesh, x: &[V3]) -> [Vec<[f64; 2]>; 2] {
     })
 }
 
-/// The sheet `relaxed` on `mesh` refined where it stays strained (see the module docs), within
-/// `budget` steps in all (those `relaxed` took included). Returns the mesh, shell and shape of
-/// the answer: the first round that converged, else the least strained of all, `relaxed`'s own
-/// when no round was tried or none did better. One stage is reported per round.
-pub fn unlock(pieces: &SeamPieces, saddles: &[usize], mesh: SheetMesh, shell: Shell, relaxed: Relaxed, budget: usize, report: &mut Reporter) -> (SheetMesh, Shell, Relaxed) {
-    let mut best = (mesh, shell, relaxed);
-    if best.2.converged || best.2.max_strain > BELOW * STRAIN_TARGET || best.1.strain_floor() > STRAIN_TARGET {
-        return best;
+/// The centroids of piece p's triangles on either side of an edge bent by more than `above`
+/// (radians) in the shape `x`, per piece (the hinges of [`SheetMesh::shell`]).
+pub fn bent_centroids(mesh: &SheetMesh, x: &[V3], above: f64) -> [Vec<[f64; 2]>; 2] {
+    [0, 1].map(|p| {
+        let faces = &mesh.faces[p];
+        let mut face_of = KeyMap::default();
+        for (f, t) in faces.iter().enumerate() {
+            for m in 0..3 {
+                face_of.insert(pair_key(t[m], t[(m + 1) % 3]), f);
+            }
+        }
+        let tip = |t: [usize; 3], i: usize, j: usize| t.into_iter().find(|&v| v != i && v != j).unwrap_or(i);
+        let mut marked = vec![false; faces.len()];
+        for (f, t) in faces.iter().enumerate() {
+            for m in 0..3 {
+                let (i, j) = (t[m], t[(m + 1) % 3]);
+                if let Some(&g) = face_of.get(&pair_key(j, i)) {
+                    if i < j && hinge::angle(x[i], x[j], x[tip(*t, i, j)], x[tip(faces[g], j, i)]).abs() > above {
+                        marked[f] = true;
+                        marked[g] = true;
+                    }
+                }
+            }
+        }
+        faces
+            .iter()
+            .zip(&marked)
+            .filter(|(_, &m)| m)
+            .map(|(t, _)| {
+                let c = t.map(|v| mesh.flat[p][v]);
+                [(c[0][0] + c[1][0] + c[2][0]) / 3.0, (c[0][1] + c[1][1] + c[2][1]) / 3.0]
+            })
+            .collect()
+    })
+}
+
+/// How a sheet that did not converge may be locked by its mesh rather than by its form.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Lock {
+    /// A few edges stay stretched (beyond the target, below [`BELOW`] times it), where the
+    /// samples allow (the seam's floor is within the target).
+    Stretched,
+    /// Isometric and not through itself, but bent by more than [`FOLD_BEND`] between two
+    /// triangles of a piece, on a seam without cone points ([`cone_samples`]).
+    Folded,
+}
+
+impl Lock {
+    /// The lock of a sheet `relaxed` of `pieces` on `mesh` with `shell`, if any.
+    pub fn of(pieces: &SeamPieces, mesh: &SheetMesh, shell: &Shell, relaxed: &Relaxed) -> Option<Lock> {
+        if relaxed.converged || shell.strain_floor() > STRAIN_TARGET {
+            return None;
+        }
+        if relaxed.max_strain > STRAIN_TARGET {
+            return (relaxed.max_strain <= BELOW * STRAIN_TARGET).then_some(Lock::Stretched);
+        }
+        if !cone_samples(pieces).is_empty() {
+            return None;
+        }
+        let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
+        (finish::max_bend(&relaxed.x, shell) > FOLD_BEND && !faces_cross(&relaxed.x, &faces)).then_some(Lock::Folded)
     }
+
+    /// Where to refine: the centroids of the triangles that lock the shape `x`, per piece.
+    fn marks(self, mesh: &SheetMesh, x: &[V3]) -> [Vec<[f64; 2]>; 2] {
+        match self {
+            Lock::Stretched => strained_centroids(mesh, x),
+            Lock::Folded => bent_centroids(mesh, x, BEND_MARK),
+        }
+    }
+}
+
+/// The sheet `relaxed` on `mesh` refined where it locks ([`Lock`], see the module docs),
+/// within `budget` steps in all (those `relaxed` took included). Returns the mesh, shell and
+/// shape of the answer: the first round that converged; else, for a stretched sheet, the least
+/// strained of all; else `relaxed` itself (a fold that refinement does not remove is the form's
+/// crease, reported as such). One stage is reported per round.
+pub fn unlock(pieces: &SeamPieces, saddles: &[usize], mesh: SheetMesh, shell: Shell, relaxed: Relaxed, budget: usize, report: &mut Reporter) -> (SheetMesh, Shell, Relaxed) {
+    let Some(lock) = Lock::of(pieces, &mesh, &shell, &relaxed) else { return (mesh, shell, relaxed) };
     let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
-    let thinner: Vec<f64> = SCHEDULE.iter().copied().filter(|&b| b <= RESTART_KB).collect();
+    let from = if lock == Lock::Folded { relaxed.stage } else { RESTART_KB };
+    let thinner: Vec<f64> = SCHEDULE.iter().copied().filter(|&b| b <= from).collect();
     let mut extra: [Vec<[f64; 2]>; 2] = [Vec::new(), Vec::new()];
-    let (mut mesh, mut x, mut steps) = (best.0.clone(), best.2.x.clone(), best.2.steps);
+    let (mut mesh_now, mut x, mut steps) = (mesh.clone(), relaxed.x.clone(), relaxed.steps);
+    let mut best = (mesh, shell, relaxed);
     for _ in 0..ROUNDS {
-        let strained = strained_centroids(&mesh, &x);
-        let added = strained[0].len() + strained[1].len();
-        if added == 0 || added as f64 > GROWTH * mesh.vertex_count() as f64 || steps >= budget {
+        let marked = lock.marks(&mesh_now, &x);
+        let added = marked[0].len() + marked[1].len();
+        if added == 0 || added as f64 > GROWTH * mesh_now.vertex_count() as f64 || steps >= budget {
             break;
         }
         for p in 0..2 {
-            extra[p].extend_from_slice(&strained[p]);
+            extra[p].extend_from_slice(&marked[p]);
         }
         let Some(finer) = SheetMesh::refined(pieces, super::INTERIOR_EDGE, saddles, &extra) else { break };
-        let Some(start) = refine::carry(&mesh, &x, &finer) else { break };
+        let Some(start) = refine::carry(&mesh_now, &x, &finer) else { break };
         let mut shell = finer.shell();
         let faces: Vec<[usize; 3]> = finer.faces.iter().flatten().copied().collect();
         let mut quiet = |_| {};
@@ -105,9 +203,9 @@ pub fn unlock(pieces: &SeamPieces, saddles: &[usize], mesh: SheetMesh, shell: Sh
         steps += r.steps;
         r.steps = steps;
         x = r.x.clone();
-        mesh = finer;
-        if r.converged || r.max_strain < best.2.max_strain {
-            best = (mesh.clone(), shell, r);
+        mesh_now = finer;
+        if r.converged || (lock == Lock::Stretched && r.max_strain < best.2.max_strain) {
+            best = (mesh_now.clone(), shell, r);
         }
         report.stage(best.2.max_strain);
         if best.2.converged {
@@ -143,6 +241,36 @@ mod tests {
             assert_eq!(marked[p].len(), 1, "piece {p}: wanted only the triangle 0–2–3, got {:?}", marked[p]);
             let got = marked[p][0];
             assert!((got[0] - want[0]).abs() < 1e-15 && (got[1] - want[1]).abs() < 1e-15, "piece {p}: wanted the centroid {want:?}, got {got:?}");
+        }
+    }
+
+    /// Two triangles hinged on the diagonal 0–2 of a unit square (both pieces are the same two
+    /// triangles on the same vertices), vertex 3 turned about it by `turn`: both triangles are
+    /// marked in each piece, at their flat centroids, exactly when the turn exceeds the mark.
+    #[test]
+    fn marks_both_triangles_of_a_hinge_bent_beyond_the_mark() {
+        let square = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let mesh = SheetMesh { n: 4, faces: [vec![[0, 1, 2], [0, 2, 3]], vec![[0, 2, 1], [0, 3, 2]]], flat: [square.clone(), square.clone()] };
+        // Vertex 3 rotated by `turn` about the axis through 0 and 2: it keeps its distances to
+        // both, so the mesh stays isometric.
+        let bent = |turn: f64| -> Vec<V3> {
+        let (c, s) = (turn.cos(), turn.sin());
+            let (mid, off) = ([0.5, 0.5, 0.0], [-0.5, 0.5, 0.0]);
+            let axis_normal = [0.0, 0.0, 1.0];
+            let p = [0, 1, 2].map(|a| mid[a] + c * off[a] + s * 0.5f64.sqrt() * axis_normal[a]);
+            vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], p]
+        };
+        let below = bent_centroids(&mesh, &bent(BEND_MARK - 0.01), BEND_MARK);
+        assert!(below[0].is_empty() && below[1].is_empty(), "a bend below the mark marks nothing, got {below:?}");
+        let above = bent_centroids(&mesh, &bent(BEND_MARK + 0.01), BEND_MARK);
+        let want = [[1.0 / 3.0, 2.0 / 3.0], [2.0 / 3.0, 1.0 / 3.0]];
+        for p in 0..2 {
+            let mut got = above[p].clone();
+            got.sort_by(|a, b| a[0].total_cmp(&b[0]));
+            assert_eq!(got.len(), 2, "piece {p}: wanted both triangles of the hinge, got {got:?}");
+            for (g, w) in got.iter().zip(&want) {
+                assert!((g[0] - w[0]).abs() < 1e-15 && (g[1] - w[1]).abs() < 1e-15, "piece {p}: wanted the centroid {w:?}, got {g:?}");
+            }
         }
     }
 }

@@ -33,6 +33,17 @@ pub struct SheetMesh {
 /// answer (2.9e-2 strain), ends 9.6e-4 strained without crossing.
 pub const CONE_DEFECT: f64 = 25.0 * std::f64::consts::PI / 180.0;
 
+/// The seam samples that are cone points of the glued surface: |angle defect| above
+/// [`CONE_DEFECT`] (a corner of either piece glued to a smooth stretch, or two corners).
+pub fn cone_samples(pieces: &SeamPieces) -> Vec<usize> {
+    (0..pieces.n)
+        .filter(|&k| {
+            let total = interior_angle(&pieces.flat[0].pts, k) + interior_angle(&pieces.flat[1].pts, k);
+            (std::f64::consts::TAU - total).abs() > CONE_DEFECT
+        })
+        .collect()
+}
+
 /// Tries at splitting the chords B shares with A ([`SheetMesh::new`]); each try re-meshes B.
 /// Congruent pieces glued as mirror images (the flat doubly covered form) share the chords of
 /// their tips: the heart with its mirror image had chord 127–130 in both at 256 seam vertices.
@@ -76,12 +87,7 @@ impl SheetMesh {
         let step = pieces.flat[0].perimeter / n as f64;
         let edge = (interior * pieces.flat[0].perimeter).max(step);
         let max_area = 3f64.sqrt() / 4.0 * edge * edge;
-        let cones: Vec<usize> = (0..n)
-            .filter(|&k| {
-                let total = interior_angle(&pieces.flat[0].pts, k) + interior_angle(&pieces.flat[1].pts, k);
-                (std::f64::consts::TAU - total).abs() > CONE_DEFECT
-            })
-            .collect();
+        let cones = cone_samples(pieces);
         let [pa, pb] = [&pieces.flat[0].pts, &pieces.flat[1].pts];
         let inner = |p: &[[f64; 2]], k: usize| [super::saddle::rows(p, saddles), extra[k].clone()].concat();
         let a = mesh_piece_with_fans(pa, max_area, &cones, &inner(pa, 0))?;
