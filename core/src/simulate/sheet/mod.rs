@@ -89,9 +89,15 @@
 //! of two blobs 238 converge instead of 219, and so do the kidney and the blob with their mirror
 //! images at 1/16 and the kidney with a circle at 128 seam vertices.
 //!
+//! *Far off.* A few pairs end strained by percents or through themselves from every twin share
+//! (the kidney with a congruent copy at 1/16 collapses through itself at the homotopy's last
+//! blend; the drawn heart with its copy at 3/16). Followed again as a thinner or thicker sheet
+//! ([`retry`]), the kidney converges and the drawn heart ends isometric and uncrossed.
+//!
 //! - [`flatmesh`]: each piece meshed by constrained Delaunay refinement, seam samples kept;
 //! - [`saddle`]: the rows of vertices beside the seam where it is a saddle;
 //! - [`adapt`]: the mesh refined where the thin sheet stays stretched or folds;
+//! - [`retry`]: the homotopy followed again at other bending weights when the sheet ends far off;
 //! - [`glued`]: the two meshes glued on the seam, and the shell's terms on them;
 //! - [`hinge`]: the dihedral angle of two triangles and its gradient;
 //! - [`shell`]: the energy and its Levenberg–Marquardt minimization;
@@ -110,6 +116,7 @@ pub mod hinge;
 pub mod homotopy;
 pub mod morph;
 pub mod refine;
+pub mod retry;
 pub mod saddle;
 pub mod shell;
 pub mod start;
@@ -239,8 +246,9 @@ pub const STALL_DROP: f64 = 0.01;
 
 /// Stages of a non-convex pair's solve, for [`crate::simulate::progress`]: the convex path's
 /// first pass, the homotopy's steps, the thinning's stages and the rounds of refinement where
-/// the sheet locks ([`adapt`]).
-pub const STAGES: usize = 1 + HOMOTOPY_STEPS + SCHEDULE.len() + adapt::ROUNDS;
+/// the sheet locks ([`adapt`]), and the other bending weights a far-off sheet is followed at
+/// ([`retry`]).
+pub const STAGES: usize = 1 + HOMOTOPY_STEPS + SCHEDULE.len() + adapt::ROUNDS + retry::KB.len();
 
 /// What a relaxation did.
 #[derive(Debug, Clone)]
@@ -356,7 +364,7 @@ pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool) -> Option
 /// carried onto it and relaxed through [`HOMOTOPY_STEPS`] blends of the rest lengths. Returns
 /// the shell (its rest lengths the pieces' at the end), the shape at the last step and the
 /// steps taken, the twins' solve included. `None` when no twin pair can be built and solved.
-fn homotopy_on(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool, report: &mut Reporter) -> Option<(Shell, Vec<V3>, usize)> {
+fn homotopy_on(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool, kb: f64, report: &mut Reporter) -> Option<(Shell, Vec<V3>, usize)> {
     let (h, coarse, sol) = twin_start(pieces, mesh, rescue)?;
     let twin_flat = h.twin_flat();
     let mut x = start::lift_onto([&coarse.flat[0].pts, &coarse.flat[1].pts], &sol, mesh, &twin_flat);
@@ -370,7 +378,7 @@ fn homotopy_on(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool, report: &mut
         lambda = lambda.min(1e-3);
         // The way there is only followed; the last step's equilibrium is the one thinned.
         let (rt, st) = if k == HOMOTOPY_STEPS { (WAYPOINT_RTOL, STAGE_STEPS) } else { (HOMOTOPY_RTOL, HOMOTOPY_STAGE_STEPS) };
-        steps += shell.minimize(&mut x, HOMOTOPY_KB * radius * radius, st, rt, &mut lambda);
+        steps += shell.minimize(&mut x, kb * radius * radius, st, rt, &mut lambda);
         report.stage(shell.max_strain(&x));
     }
     Some((shell, x, steps))
@@ -401,34 +409,36 @@ pub const COARSE_MIN: usize = 128;
 /// ended in another equilibrium, bent more (discrete bending energy 7–30 % higher; Pebble 46.9
 /// against 41.2, five lobes 148 against 134), so the thick-to-thin continuation on the fine
 /// mesh is what selects the smoother equilibrium.
-pub fn coarse_homotopy(pieces: &SeamPieces, mesh: &SheetMesh, report: &mut Reporter) -> Option<(Vec<V3>, usize)> {
+pub fn coarse_homotopy(pieces: &SeamPieces, mesh: &SheetMesh, kb: f64, report: &mut Reporter) -> Option<(Vec<V3>, usize)> {
     if pieces.n % COARSE_STRIDE != 0 || pieces.n / COARSE_STRIDE < COARSE_MIN {
         return None;
     }
     let level = pieces.every(COARSE_STRIDE);
     let coarse = SheetMesh::new(&level, INTERIOR_EDGE * COARSE_STRIDE as f64)?;
-    let (_, x, steps) = homotopy_on(&level, &coarse, false, report)?;
+    let (_, x, steps) = homotopy_on(&level, &coarse, false, kb, report)?;
     Some((refine::carry(&coarse, &x, mesh)?, steps))
 }
 
 /// The homotopy from convex twins ([`homotopy`]), on the coarse level where there is one
 /// ([`coarse_homotopy`]), else on `mesh` (on its plain version when `mesh` is `layered` with
-/// rows beside saddles, [`saddle`]); then the thinning on `mesh`. `None` when no twin pair can
-/// be built and solved.
-pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, layered: bool, budget: usize, report: &mut Reporter) -> Option<(Shell, Relaxed)> {
-    let (mut shell, x, steps) = match coarse_homotopy(pieces, mesh, report) {
+/// rows beside saddles, [`saddle`]); then the thinning on `mesh` through the stages of
+/// [`SCHEDULE`] thinner than the homotopy's bending weight `kb` (`kb / R²`, [`HOMOTOPY_KB`]
+/// first, [`retry::KB`] when that ends far off). `None` when no twin pair can be built and
+/// solved.
+pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, layered: bool, kb: f64, budget: usize, report: &mut Reporter) -> Option<(Shell, Relaxed)> {
+    let (mut shell, x, steps) = match coarse_homotopy(pieces, mesh, kb, report) {
         Some((x, steps)) => (mesh.shell(), x, steps),
         None if layered => {
             // The homotopy on the plain mesh ([`saddle`]), carried onto the layered one.
             let plain = SheetMesh::new(pieces, INTERIOR_EDGE)?;
-            let (_, x, steps) = homotopy_on(pieces, &plain, true, report)?;
+            let (_, x, steps) = homotopy_on(pieces, &plain, true, kb, report)?;
             (mesh.shell(), refine::carry(&plain, &x, mesh)?, steps)
         }
-        None => homotopy_on(pieces, mesh, true, report)?,
+        None => homotopy_on(pieces, mesh, true, kb, report)?,
     };
     let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
     let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
-    let thinner: Vec<f64> = SCHEDULE.iter().copied().filter(|&b| b < HOMOTOPY_KB).collect();
+    let thinner: Vec<f64> = SCHEDULE.iter().copied().filter(|&b| b < kb).collect();
     report.skip(SCHEDULE.len() - thinner.len());
     let mut relaxed = thin(&mut shell, x, radius, budget.saturating_sub(steps), &thinner, &faces, report);
     relaxed.steps += steps;
@@ -446,14 +456,15 @@ pub enum Outcome {
     NeedsStart,
 }
 
-/// The sheet path for a pair with a non-convex piece, from its convex twins ([`follow`]);
-/// `iterations` are the steps taken before.
+/// The sheet path for a pair with a non-convex piece, from its convex twins ([`follow`]),
+/// refined where its mesh holds it ([`adapt`]), and followed again at other bending weights
+/// when it ends far off ([`retry`]); `iterations` are the steps taken before.
 pub fn simulate(pieces: &SeamPieces, iterations: usize, budget: usize, report: &mut Reporter) -> Outcome {
     let saddles = saddle::samples(pieces);
     let Some(mesh) = SheetMesh::layered(pieces, INTERIOR_EDGE, &saddles) else { return Outcome::Unmeshed };
-    let Some((shell, r)) = follow(pieces, &mesh, !saddles.is_empty(), budget, report) else { return Outcome::NeedsStart };
-    let (mesh, shell, r) = adapt::unlock(pieces, &saddles, mesh, shell, r, budget, report);
-    Outcome::Sheet(finish::simulation(pieces, &mesh, &shell, &r.x, iterations + r.steps, r.converged), r.max_strain)
+    let Some(first) = retry::attempt(pieces, &mesh, &saddles, HOMOTOPY_KB, budget, report) else { return Outcome::NeedsStart };
+    let a = retry::others(pieces, &mesh, &saddles, first, budget, report);
+    Outcome::Sheet(finish::simulation(pieces, &a.mesh, &a.shell, &a.relaxed.x, iterations + a.relaxed.steps, a.relaxed.converged), a.relaxed.max_strain)
 }
 
 /// The sheet path from the convex path's answer `seam` on the same samples, lifted onto the

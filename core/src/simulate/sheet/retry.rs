@@ -1,0 +1,96 @@
+//! Other paths for a sheet that ends far off: the homotopy followed again at other bending
+//! weights.
+//!
+//! The homotopy from convex twins ([`super::follow`]) is followed as a thick sheet
+//! ([`super::HOMOTOPY_KB`]). On most pairs that path reaches an equilibrium the thinning takes to
+//! the form. On some it ends far off: strained by percents, or with the sheets through each
+//! other. The kidney with a congruent copy at 1/16 of its perimeter is an example: its homotopy
+//! holds 221,000 mm³ to the last blend and then, relaxed, collapses to 100,000 through itself.
+//! The same pairs end in the same state from every twin share ([`super::TWIN_CIRCLE_SHARES`])
+//! and with 4, 8 or 16 blends, but not from another thickness:
+//!
+//! - at `kb/R²` = 1e-5 the kidney with its copy at 1/16 converges (221,639 mm³);
+//! - at 1e-3 the drawn heart with its copy at 3/16 and 13/16 ends isometric and uncrossed
+//!   (creased by 103° and 119°), where it had ended 8.5 % stretched through itself.
+//!
+//! So a sheet that ends far off ([`far_off`]) is followed again at each weight of [`KB`]. The
+//! best of all the attempts is the answer ([`Attempt::grade`]).
+
+use super::glued::SheetMesh;
+use super::shell::Shell;
+use super::{adapt, follow, Relaxed, PATIENT_ABOVE, STRAIN_TARGET};
+use crate::simulate::checks::faces_cross;
+use crate::simulate::progress::Reporter;
+use crate::simulate::seam::SeamPieces;
+
+/// The bending weights (`kb / R²`) a far-off sheet's homotopy is followed at again, in order.
+pub const KB: [f64; 2] = [1e-5, 1e-3];
+
+/// One path's answer: the mesh it ended on (refined where it was held, [`adapt`]), its shell and
+/// its shape, and whether the sheets cross.
+pub struct Attempt {
+    pub mesh: SheetMesh,
+    pub shell: Shell,
+    pub relaxed: Relaxed,
+    pub crossing: bool,
+}
+
+impl Attempt {
+    /// How good an answer is, best first: converged; isometric and uncrossed (creased); uncrossed
+    /// but stretched; through itself. Ties go to the lesser strain.
+    pub fn grade(&self) -> (u8, f64) {
+        let r = &self.relaxed;
+        let class = if r.converged {
+            0
+        } else if !self.crossing && r.max_strain <= STRAIN_TARGET {
+            1
+        } else if !self.crossing {
+            2
+        } else {
+            3
+        };
+        (class, r.max_strain)
+    }
+}
+
+/// Whether an answer is far off: not converged, and strained beyond [`PATIENT_ABOVE`] times the
+/// target or through itself.
+pub fn far_off(a: &Attempt) -> bool {
+    !a.relaxed.converged && (a.relaxed.max_strain > PATIENT_ABOVE * STRAIN_TARGET || a.crossing)
+}
+
+/// The homotopy at bending weight `kb` and the thinning ([`follow`]), refined where the mesh
+/// holds the sheet ([`adapt::unlock`]). `None` when no twin pair can be built and solved.
+pub fn attempt(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], kb: f64, budget: usize, report: &mut Reporter) -> Option<Attempt> {
+    let (shell, r) = follow(pieces, mesh, !saddles.is_empty(), kb, budget, report)?;
+    let (mesh, shell, relaxed) = adapt::unlock(pieces, saddles, mesh.clone(), shell, r, budget, report);
+    let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
+    let crossing = faces_cross(&relaxed.x, &faces);
+    Some(Attempt { mesh, shell, relaxed, crossing })
+}
+
+/// `first`, or when it is far off ([`far_off`]) the best ([`Attempt::grade`]) of it and the
+/// attempts at the weights of [`KB`], tried in order until one converges, within `budget`
+/// steps in all. The answer's `steps` count every attempt's. One stage is reported per attempt
+/// tried, at the best answer's strain.
+pub fn others(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], first: Attempt, budget: usize, report: &mut Reporter) -> Attempt {
+    if !far_off(&first) {
+        return first;
+    }
+    let mut spent = first.relaxed.steps;
+    let mut best = first;
+    for &kb in &KB {
+        if spent >= budget || best.relaxed.converged {
+            break;
+        }
+        let mut quiet = |_| {};
+        let Some(a) = attempt(pieces, mesh, saddles, kb, budget - spent, &mut Reporter::new(&mut quiet, super::STAGES)) else { break };
+        spent += a.relaxed.steps;
+        if a.grade() < best.grade() {
+            best = a;
+        }
+        report.stage(best.relaxed.max_strain);
+    }
+    best.relaxed.steps = spent;
+    best
+}
