@@ -32,6 +32,21 @@ function volumeArea(r) {
   return { v, a };
 }
 
+/** The kidney of issue 14, r = 60(1 + 0.35 cos 2θ − 0.25 cos θ + 0.2 sin 3θ), through `n` anchors
+ * with Catmull–Rom tangents (the bench's `polar`). */
+function kidneyThrough(n) {
+  const rk = (t) => 60 * (1 + 0.35 * Math.cos(2 * t) - 0.25 * Math.cos(t) + 0.2 * Math.sin(3 * t));
+  const pts = Array.from({ length: n }, (_, k) => { const t = (2 * Math.PI * k) / n; return [rk(t) * Math.cos(t), rk(t) * Math.sin(t)]; });
+  return {
+    closed: true,
+    points: pts.map(([x, y], i) => {
+      const p = pts[(i + n - 1) % n], q = pts[(i + 1) % n];
+      const t = [(q[0] - p[0]) / 6, (q[1] - p[1]) / 6];
+      return { anchor: [x, y], left: [x - t[0], y - t[1]], right: [x + t[0], y + t[1]] };
+    }),
+  };
+}
+
 /** From the mesh and `flat` alone: the largest edge strain against each triangle's own flat
  * piece, the sharpest bend between two triangles of one piece (radians), and every edge bent by
  * more than 90° ("i,j" with i < j → [piece, bend]). */
@@ -159,19 +174,9 @@ test('cold solve converges at every offset for ellipse with circle and two ellip
 
 // simulateWithProgress (the panel's solver thread): a non-convex pair's stages are reported as
 // { done, total, maxStrain }, rising, and the result is simulate's; a callback that is not a
-// function is a clear error. The kidney of issue 14, r = 60(1 + 0.35 cos 2θ − 0.25 cos θ + 0.2 sin 3θ),
-// through 48 anchors with Catmull–Rom tangents.
+// function is a clear error. The kidney of issue 14 through 48 anchors (kidneyThrough).
 test('simulateWithProgress reports rising stages of a non-convex solve and returns simulate\'s result', () => {
-  const r0 = (t) => 60 * (1 + 0.35 * Math.cos(2 * t) - 0.25 * Math.cos(t) + 0.2 * Math.sin(3 * t));
-  const pts = Array.from({ length: 48 }, (_, k) => { const t = (2 * Math.PI * k) / 48; return [r0(t) * Math.cos(t), r0(t) * Math.sin(t)]; });
-  const dent = {
-    closed: true,
-    points: pts.map(([x, y], i) => {
-      const p = pts[(i + 47) % 48], q = pts[(i + 1) % 48];
-      const t = [(q[0] - p[0]) / 6, (q[1] - p[1]) / 6];
-      return { anchor: [x, y], left: [x - t[0], y - t[1]], right: [x + t[0], y + t[1]] };
-    }),
-  };
+  const dent = kidneyThrough(48);
   const Pd = m.measure(dent).perimeter;
   const ring = ellipse(1, 1, Pd / m.measure(ellipse(1, 1)).perimeter);
   const seen = [];
@@ -222,16 +227,7 @@ test('stats.shortfall names the promise an unconverged answer misses; maxBend is
 // bend was the mesh's: refined along it (simulate::sheet::adapt) the circle bends by less than
 // 90°, and the preview is converged here too, each promise measured on the mesh.
 test('test_issue_14 the kidney with a circle is no longer creased by its mesh in WebAssembly', () => {
-  const rk = (t) => 60 * (1 + 0.35 * Math.cos(2 * t) - 0.25 * Math.cos(t) + 0.2 * Math.sin(3 * t));
-  const pts = Array.from({ length: 72 }, (_, k) => { const t = (2 * Math.PI * k) / 72; return [rk(t) * Math.cos(t), rk(t) * Math.sin(t)]; });
-  const kidney = {
-    closed: true,
-    points: pts.map(([x, y], i) => {
-      const p = pts[(i + 71) % 72], q = pts[(i + 1) % 72];
-      const t = [(q[0] - p[0]) / 6, (q[1] - p[1]) / 6];
-      return { anchor: [x, y], left: [x - t[0], y - t[1]], right: [x + t[0], y + t[1]] };
-    }),
-  };
+  const kidney = kidneyThrough(72);
   // The circle as the bench builds it: the unit circle's points scaled to the kidney's perimeter.
   const s = m.measure(kidney).perimeter / m.measure(ellipse(1, 1)).perimeter;
   const ring = { closed: true, points: ellipse(1, 1).points.map((k) => ({ anchor: k.anchor.map((v) => v * s), left: k.left.map((v) => v * s), right: k.right.map((v) => v * s) })) };
