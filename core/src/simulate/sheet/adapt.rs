@@ -82,6 +82,12 @@ pub const BEND_MARK: f64 = 60.0 * std::f64::consts::PI / 180.0;
 /// no local lock.
 pub const GROWTH: f64 = 0.4;
 
+/// The centroid of triangle `t` of piece `p` on its flat piece.
+fn flat_centroid(mesh: &SheetMesh, p: usize, t: [usize; 3]) -> [f64; 2] {
+    let c = t.map(|v| mesh.flat[p][v]);
+    [(c[0][0] + c[1][0] + c[2][0]) / 3.0, (c[0][1] + c[1][1] + c[2][1]) / 3.0]
+}
+
 /// The centroids of piece p's triangles that have an edge strained beyond [`MARK`] times
 /// [`STRAIN_TARGET`] in the shape `x`, per piece.
 pub fn strained_centroids(mesh: &SheetMesh, x: &[V3]) -> [Vec<[f64; 2]>; 2] {
@@ -92,10 +98,7 @@ pub fn strained_centroids(mesh: &SheetMesh, x: &[V3]) -> [Vec<[f64; 2]>; 2] {
                 let (i, j) = (t[k], t[(k + 1) % 3]);
                 (norm(sub(x[i], x[j])) / mesh.rest(p, i, j) - 1.0).abs() > MARK * STRAIN_TARGET
             }))
-            .map(|t| {
-                let c = t.map(|v| mesh.flat[p][v]);
-                [(c[0][0] + c[1][0] + c[2][0]) / 3.0, (c[0][1] + c[1][1] + c[2][1]) / 3.0]
-            })
+            .map(|t| flat_centroid(mesh, p, *t))
             .collect()
     })
 }
@@ -124,14 +127,7 @@ pub fn bent_centroids(mesh: &SheetMesh, x: &[V3], above: f64) -> [Vec<[f64; 2]>;
                 }
             }
         }
-        faces
-            .iter()
-            .zip(&marked)
-            .filter(|(_, &m)| m)
-            .map(|(t, _)| {
-                let c = t.map(|v| mesh.flat[p][v]);
-                [(c[0][0] + c[1][0] + c[2][0]) / 3.0, (c[0][1] + c[1][1] + c[2][1]) / 3.0]
-            })
+        faces.iter().zip(&marked).filter(|(_, &m)| m).map(|(t, _)| flat_centroid(mesh, p, *t))
             .collect()
     })
 }

@@ -76,8 +76,9 @@ pub fn far_off(a: &Attempt) -> bool {
 pub fn attempt(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], kb: f64, budget: usize, report: &mut Reporter) -> Option<Attempt> {
     let (shell, r) = follow(pieces, mesh, !saddles.is_empty(), kb, budget, report)?;
     let (mesh, shell, relaxed) = adapt::unlock(pieces, saddles, mesh.clone(), shell, r, budget, report);
-    let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
-    let crossing = faces_cross(&relaxed.x, &faces);
+    // A converged answer is sound ([`super::finish::sound`]), so it does not cross: only the
+    // others are tested, not every pair's answer.
+    let crossing = !relaxed.converged && faces_cross(&relaxed.x, &mesh.faces.iter().flatten().copied().collect::<Vec<_>>());
     Some(Attempt { mesh, shell, relaxed, crossing })
 }
 
