@@ -92,12 +92,15 @@
 //! *Far off.* A few pairs end strained by percents or through themselves from every twin share
 //! (the kidney with a congruent copy at 1/16 collapses through itself at the homotopy's last
 //! blend; the drawn heart with its copy at 3/16). Followed again as a thinner or thicker sheet
-//! ([`retry`]), the kidney converges and the drawn heart ends isometric and uncrossed.
+//! ([`retry`]), the kidney converges and the drawn heart ends isometric and uncrossed. The
+//! smooth heart with its copy, through itself on every such path, is followed once more with
+//! the sheets pushing each other back where they touch ([`contact`]).
 //!
 //! - [`flatmesh`]: each piece meshed by constrained Delaunay refinement, seam samples kept;
 //! - [`saddle`]: the rows of vertices beside the seam where it is a saddle;
 //! - [`adapt`]: the mesh refined where the thin sheet stays stretched or folds;
 //! - [`retry`]: the homotopy followed again at other bending weights when the sheet ends far off;
+//! - [`contact`]: the sheets pushed back where they touch, for the last of those paths;
 //! - [`glued`]: the two meshes glued on the seam, and the shell's terms on them;
 //! - [`hinge`]: the dihedral angle of two triangles and its gradient;
 //! - [`shell`]: the energy and its Levenberg–Marquardt minimization;
@@ -109,6 +112,7 @@
 //!   and its stats.
 
 pub mod adapt;
+pub mod contact;
 pub mod finish;
 pub mod flatmesh;
 pub mod glued;
@@ -167,6 +171,30 @@ pub const HOMOTOPY_STEPS: usize = 4;
 pub const HOMOTOPY_KB: f64 = 1e-4;
 pub const HOMOTOPY_STAGE_STEPS: usize = 20;
 pub const HOMOTOPY_RTOL: f64 = 1e-3;
+
+/// How a path from the twins is followed ([`follow`]): the homotopy's bending weight (`kb /
+/// R²`), and whether the sheets push each other back where they touch ([`contact`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Path {
+    pub kb: f64,
+    pub contact: bool,
+}
+
+impl Path {
+    /// The homotopy at bending weight `kb`, without contact.
+    pub fn plain(kb: f64) -> Self {
+        Path { kb, contact: false }
+    }
+
+    /// The shell of `mesh`, with contact when the path has it.
+    fn shell(&self, pieces: &SeamPieces, mesh: &SheetMesh) -> Shell {
+        let mut shell = mesh.shell();
+        if self.contact {
+            shell.contact = Some(contact::Contact::on(pieces, mesh));
+        }
+        shell
+    }
+}
 
 /// Shares of a circle's turning in the convex twins, tried in order ([`morph::Morph`]).
 pub const TWIN_CIRCLE_SHARES: [f64; 3] = [0.25, 0.5, 0.75];
@@ -246,9 +274,9 @@ pub const STALL_DROP: f64 = 0.01;
 
 /// Stages of a non-convex pair's solve, for [`crate::simulate::progress`]: the convex path's
 /// first pass, the homotopy's steps, the thinning's stages and the rounds of refinement where
-/// the sheet locks ([`adapt`]), and the other bending weights a far-off sheet is followed at
-/// ([`retry`]).
-pub const STAGES: usize = 1 + HOMOTOPY_STEPS + SCHEDULE.len() + adapt::ROUNDS + retry::KB.len();
+/// the sheet locks ([`adapt`]), and the other paths a far-off sheet is followed on
+/// ([`retry`]: one per weight of [`retry::KB`], and one with contact).
+pub const STAGES: usize = 1 + HOMOTOPY_STEPS + SCHEDULE.len() + adapt::ROUNDS + retry::KB.len() + 1;
 
 /// What a relaxation did.
 #[derive(Debug, Clone)]
@@ -364,11 +392,11 @@ pub fn twin_start(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool) -> Option
 /// carried onto it and relaxed through [`HOMOTOPY_STEPS`] blends of the rest lengths. Returns
 /// the shell (its rest lengths the pieces' at the end), the shape at the last step and the
 /// steps taken, the twins' solve included. `None` when no twin pair can be built and solved.
-fn homotopy_on(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool, kb: f64, report: &mut Reporter) -> Option<(Shell, Vec<V3>, usize)> {
+fn homotopy_on(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool, path: Path, report: &mut Reporter) -> Option<(Shell, Vec<V3>, usize)> {
     let (h, coarse, sol) = twin_start(pieces, mesh, rescue)?;
     let twin_flat = h.twin_flat();
     let mut x = start::lift_onto([&coarse.flat[0].pts, &coarse.flat[1].pts], &sol, mesh, &twin_flat);
-    let mut shell = mesh.shell();
+    let mut shell = path.shell(pieces, mesh);
     let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
     let mut lambda: f64 = 1e-3;
     let mut steps = sol.iterations;
@@ -378,7 +406,7 @@ fn homotopy_on(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool, kb: f64, rep
         lambda = lambda.min(1e-3);
         // The way there is only followed; the last step's equilibrium is the one thinned.
         let (rt, st) = if k == HOMOTOPY_STEPS { (WAYPOINT_RTOL, STAGE_STEPS) } else { (HOMOTOPY_RTOL, HOMOTOPY_STAGE_STEPS) };
-        steps += shell.minimize(&mut x, kb * radius * radius, st, rt, &mut lambda);
+        steps += shell.minimize(&mut x, path.kb * radius * radius, st, rt, &mut lambda);
         report.stage(shell.max_strain(&x));
     }
     Some((shell, x, steps))
@@ -409,36 +437,36 @@ pub const COARSE_MIN: usize = 128;
 /// ended in another equilibrium, bent more (discrete bending energy 7–30 % higher; Pebble 46.9
 /// against 41.2, five lobes 148 against 134), so the thick-to-thin continuation on the fine
 /// mesh is what selects the smoother equilibrium.
-pub fn coarse_homotopy(pieces: &SeamPieces, mesh: &SheetMesh, kb: f64, report: &mut Reporter) -> Option<(Vec<V3>, usize)> {
+pub fn coarse_homotopy(pieces: &SeamPieces, mesh: &SheetMesh, path: Path, report: &mut Reporter) -> Option<(Vec<V3>, usize)> {
     if pieces.n % COARSE_STRIDE != 0 || pieces.n / COARSE_STRIDE < COARSE_MIN {
         return None;
     }
     let level = pieces.every(COARSE_STRIDE);
     let coarse = SheetMesh::new(&level, INTERIOR_EDGE * COARSE_STRIDE as f64)?;
-    let (_, x, steps) = homotopy_on(&level, &coarse, false, kb, report)?;
+    let (_, x, steps) = homotopy_on(&level, &coarse, false, path, report)?;
     Some((refine::carry(&coarse, &x, mesh)?, steps))
 }
 
 /// The homotopy from convex twins ([`homotopy`]), on the coarse level where there is one
 /// ([`coarse_homotopy`]), else on `mesh` (on its plain version when `mesh` is `layered` with
 /// rows beside saddles, [`saddle`]); then the thinning on `mesh` through the stages of
-/// [`SCHEDULE`] thinner than the homotopy's bending weight `kb` (`kb / R²`, [`HOMOTOPY_KB`]
-/// first, [`retry::KB`] when that ends far off). `None` when no twin pair can be built and
-/// solved.
-pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, layered: bool, kb: f64, budget: usize, report: &mut Reporter) -> Option<(Shell, Relaxed)> {
-    let (mut shell, x, steps) = match coarse_homotopy(pieces, mesh, kb, report) {
-        Some((x, steps)) => (mesh.shell(), x, steps),
+/// [`SCHEDULE`] thinner than the homotopy's bending weight (`path.kb`, as `kb / R²`:
+/// [`HOMOTOPY_KB`] first, [`retry::KB`] when that ends far off), with self-contact when
+/// `path.contact` ([`retry::CONTACT_KB`]). `None` when no twin pair can be built and solved.
+pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, layered: bool, path: Path, budget: usize, report: &mut Reporter) -> Option<(Shell, Relaxed)> {
+    let (mut shell, x, steps) = match coarse_homotopy(pieces, mesh, path, report) {
+        Some((x, steps)) => (path.shell(pieces, mesh), x, steps),
         None if layered => {
             // The homotopy on the plain mesh ([`saddle`]), carried onto the layered one.
             let plain = SheetMesh::new(pieces, INTERIOR_EDGE)?;
-            let (_, x, steps) = homotopy_on(pieces, &plain, true, kb, report)?;
-            (mesh.shell(), refine::carry(&plain, &x, mesh)?, steps)
+            let (_, x, steps) = homotopy_on(pieces, &plain, true, path, report)?;
+            (path.shell(pieces, mesh), refine::carry(&plain, &x, mesh)?, steps)
         }
-        None => homotopy_on(pieces, mesh, true, kb, report)?,
+        None => homotopy_on(pieces, mesh, true, path, report)?,
     };
     let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
     let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
-    let thinner: Vec<f64> = SCHEDULE.iter().copied().filter(|&b| b < kb).collect();
+    let thinner: Vec<f64> = SCHEDULE.iter().copied().filter(|&b| b < path.kb).collect();
     report.skip(SCHEDULE.len() - thinner.len());
     let mut relaxed = thin(&mut shell, x, radius, budget.saturating_sub(steps), &thinner, &faces, report);
     relaxed.steps += steps;
@@ -462,7 +490,7 @@ pub enum Outcome {
 pub fn simulate(pieces: &SeamPieces, iterations: usize, budget: usize, report: &mut Reporter) -> Outcome {
     let saddles = saddle::samples(pieces);
     let Some(mesh) = SheetMesh::layered(pieces, INTERIOR_EDGE, &saddles) else { return Outcome::Unmeshed };
-    let Some(first) = retry::attempt(pieces, &mesh, &saddles, HOMOTOPY_KB, budget, report) else { return Outcome::NeedsStart };
+    let Some(first) = retry::attempt(pieces, &mesh, &saddles, Path::plain(HOMOTOPY_KB), budget, report) else { return Outcome::NeedsStart };
     let a = retry::others(pieces, &mesh, &saddles, first, budget, report);
     Outcome::Sheet(finish::simulation(pieces, &a.mesh, &a.shell, &a.relaxed.x, iterations + a.relaxed.steps, a.relaxed.converged), a.relaxed.max_strain)
 }

@@ -35,13 +35,20 @@
 
 use super::glued::SheetMesh;
 use super::shell::Shell;
-use super::{adapt, follow, Relaxed, PATIENT_ABOVE, STRAIN_TARGET};
+use super::{adapt, follow, Path, Relaxed, PATIENT_ABOVE, STRAIN_TARGET};
 use crate::simulate::checks::faces_cross;
 use crate::simulate::progress::Reporter;
 use crate::simulate::seam::SeamPieces;
 
 /// The bending weights (`kb / R²`) a far-off sheet's homotopy is followed at again, in order.
 pub const KB: [f64; 2] = [1e-3, 1e-5];
+
+/// The bending weight of the last path, with self-contact ([`super::contact`]), tried when the
+/// best answer still crosses itself: the smooth heart with its copy at 3/16 and 13/16 and with
+/// its mirror image at 3/16 end isometric and uncrossed (creased) on it. With contact at the
+/// first path's weight ([`super::HOMOTOPY_KB`]) they ended 26–30 % strained, through
+/// themselves.
+pub const CONTACT_KB: f64 = 1e-3;
 
 /// One path's answer: the mesh it ended on (refined where it was held, [`adapt`]), its shell and
 /// its shape, and whether the sheets cross.
@@ -88,10 +95,10 @@ pub fn far_off(a: &Attempt) -> bool {
     !a.relaxed.converged && (a.relaxed.max_strain > PATIENT_ABOVE * STRAIN_TARGET || a.crossing)
 }
 
-/// The homotopy at bending weight `kb` and the thinning ([`follow`]), refined where the mesh
-/// holds the sheet ([`adapt::unlock`]). `None` when no twin pair can be built and solved.
-pub fn attempt(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], kb: f64, budget: usize, report: &mut Reporter) -> Option<Attempt> {
-    let (shell, r) = follow(pieces, mesh, !saddles.is_empty(), kb, budget, report)?;
+/// The homotopy along `path` and the thinning ([`follow`]), refined where the mesh holds the
+/// sheet ([`adapt::unlock`]). `None` when no twin pair can be built and solved.
+pub fn attempt(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], path: Path, budget: usize, report: &mut Reporter) -> Option<Attempt> {
+    let (shell, r) = follow(pieces, mesh, !saddles.is_empty(), path, budget, report)?;
     let (mesh, shell, relaxed) = adapt::unlock(pieces, saddles, mesh.clone(), shell, r, budget, report);
     // A converged answer is sound ([`super::finish::sound`]), so it does not cross: only the
     // others are tested, not every pair's answer.
@@ -101,7 +108,8 @@ pub fn attempt(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], kb: f64
 
 /// `first`, or when it is far off ([`far_off`]) the best ([`Attempt::grade`]) of it and the
 /// attempts at the weights of [`KB`], tried in order until one is sound ([`Attempt::sound`]),
-/// within `budget` steps in all. The answer's `steps` count every attempt's. One stage is reported per attempt
+/// and when the best still crosses itself one more with contact ([`CONTACT_KB`]), within
+/// `budget` steps in all. The answer's `steps` count every attempt's. One stage is reported per attempt
 /// tried, at the best answer's strain.
 pub fn others(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], first: Attempt, budget: usize, report: &mut Reporter) -> Attempt {
     if !far_off(&first) {
@@ -109,12 +117,13 @@ pub fn others(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], first: A
     }
     let mut spent = first.relaxed.steps;
     let mut best = first;
-    for &kb in &KB {
-        if spent >= budget || best.sound() {
+    let paths = KB.iter().map(|&kb| Path::plain(kb)).chain([Path { kb: CONTACT_KB, contact: true }]);
+    for path in paths {
+        if spent >= budget || best.sound() || (path.contact && !best.crossing) {
             break;
         }
         let mut quiet = |_| {};
-        let Some(a) = attempt(pieces, mesh, saddles, kb, budget - spent, &mut Reporter::new(&mut quiet, super::STAGES)) else { break };
+        let Some(a) = attempt(pieces, mesh, saddles, path, budget - spent, &mut Reporter::new(&mut quiet, super::STAGES)) else { break };
         spent += a.relaxed.steps;
         if a.grade() < best.grade() {
             best = a;

@@ -10,7 +10,9 @@
 //! * bending, one residual per interior edge of a piece: `r = √(kb · 3L²/(A₁ + A₂)) · θ`, with θ
 //!   the hinge's dihedral angle ([`super::hinge`]), `A₁, A₂` the flat areas of its triangles.
 //!   The rest angle is 0 (the pieces are cut flat); the seam has no bending term (it is a free
-//!   hinge: the two pieces meet there at whatever angle the equilibrium gives).
+//!   hinge: the two pieces meet there at whatever angle the equilibrium gives);
+//! * contact, when set ([`super::contact`]): one residual per vertex closer to a face than the
+//!   gap, or on the wrong side of it.
 //!
 //! Both terms scale like an area, so `kb` is a squared length, independent of the mesh: the
 //! bending of a curvature κ costs about `kb·κ²` per unit area against `ε²` for a strain ε, so
@@ -60,6 +62,8 @@ pub struct Shell {
     edge_slot: Vec<usize>,
     hinge_slots: Vec<[usize; 6]>,
     tips: bool,
+    /// Self-contact ([`super::contact`]), off unless set.
+    pub contact: Option<super::contact::Contact>,
 }
 
 /// The pairs of a hinge's four vertices, in the order of [`Shell::hinge_slots`]; the last one
@@ -106,7 +110,7 @@ impl Shell {
     pub fn new(n: usize, edges: Vec<Edge>, hinges: Vec<Hinge>) -> Self {
         let (pairs, edge_slot, hinge_slots) = pattern(&edges, &hinges, true);
         let ne = NormalEquations::new(n, &pairs);
-        Shell { n, edges, hinges, ne, pairs, edge_slot, hinge_slots, tips: true }
+        Shell { n, edges, hinges, ne, pairs, edge_slot, hinge_slots, tips: true, contact: None }
     }
 
     /// Whether the normal equations hold each hinge's tip block (they do from
@@ -142,7 +146,7 @@ impl Shell {
 
     /// The energy at `x` for bending weight `kb`.
     pub fn cost(&self, x: &[V3], kb: f64) -> f64 {
-        let m: f64 = self.edges.iter().map(|e| (norm(sub(x[e.j], x[e.i])) - e.rest).powi(2)).sum();
+        let m: f64 = self.edges.iter().map(|e| (norm(sub(x[e.j], x[e.i])) - e.rest).powi(2)).sum::<f64>() + self.contact.as_ref().map_or(0.0, |c| c.cost(x));
         if kb == 0.0 {
             return m;
         }
@@ -237,6 +241,28 @@ impl Shell {
                 add(&h.v, &grad.map(|row| row.map(|v| w * v)), slots, &HINGE_PAIRS, w * theta);
             }
         }
+        if let Some(c) = &self.contact {
+            for t in c.terms(x) {
+                for (&v, row) in t.v.iter().zip(&t.rows) {
+                    for a in 0..3 {
+                        g[3 * v + a] += row[a] * t.r;
+                    }
+                }
+                if let Some((diag, _)) = blocks.as_mut() {
+                    // A majorant of the term's JᵀJ on the diagonal blocks:
+                    // (g·δ_v − Σ bᵢ g·δᵢ)² ≤ 2(g·δ_v)² + 2 Σ bᵢ (g·δᵢ)².
+                    let gv = t.rows[0];
+                    for (k, &v) in t.v.iter().enumerate() {
+                        let s = if k == 0 { 2.0 } else { 2.0 * t.b[k - 1] };
+                        for a in 0..3 {
+                            for c in 0..3 {
+                                diag[v][a][c] += s * gv[a] * gv[c];
+                            }
+                        }
+                    }
+                }
+            }
+        }
         g
     }
 
@@ -267,6 +293,12 @@ impl Shell {
         while steps < budget {
             steps += 1;
             let reuse = age < REUSE;
+            if !reuse {
+                if let Some(c) = &mut self.contact {
+                    c.refresh(x);
+                    cost = self.cost(x, kb);
+                }
+            }
             let Some(d) = self.step(x, kb, *lambda, reuse) else {
                 if reuse {
                     age = usize::MAX;
