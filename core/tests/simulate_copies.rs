@@ -74,3 +74,16 @@ fn test_issue_14_a_smooth_heart_with_its_copy_no_longer_passes_through_itself() 
         assert_eq!(s.stats.converged, !creased, "{k}/16: converged must say whether it creases ({:.1}°)", bend.to_degrees());
     }
 }
+
+/// Regression: the kidney glued to a copy of itself at 13/16 of its perimeter ended 1.95 %
+/// stretched through itself on every path: within 1–4 mm of the seam the two pieces closed
+/// through each other across it (its opening went from 10° through 0). Followed again with the
+/// pieces kept from closing through each other there (`simulate::sheet::contact`), it keeps
+/// every promise.
+#[test]
+fn test_issue_14_a_kidney_with_its_copy_at_13_16_no_longer_closes_through_its_seam() {
+    let k = shapes::kidney();
+    let s = run(&k, &k, 13.0 / 16.0);
+    println!("13/16: {}", mesh_checks::report(&s));
+    assert_eq!(promise(&s), Ok(()), "{}", mesh_checks::report(&s));
+}

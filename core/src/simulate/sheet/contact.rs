@@ -16,14 +16,19 @@
 //! path follows without it ([`super::retry`]): its dip is pushed through the other heart's lobe.
 //! Followed again with contact (as a thick sheet, `kb/R²` = 1e-3), it ends isometric and
 //! uncrossed, creased, at 3/16 and 13/16 (its copy) and at 3/16 (its mirror image), where it
-//! had ended 4.2–4.8 % stretched through itself.
+//! had ended 4.2–4.8 % stretched through itself; with contact across the seam too (below), it
+//! converges at 1/16 (its copy), and so does the kidney with its copy at 13/16.
 //!
-//! *What it does not hold.* The kidney with its mirror image at 5/16 and with its copy at 13/16
-//! cross within 1–4 mm of the seam, between triangles within two edges of each other: the two
-//! pieces fold through each other along the seam, which this term leaves out (a vertex and a face
-//! that close are neighbours on a sound form too, where the seam is sharp). Counted as contacts
-//! (only faces on a vertex's own edges left out), the sheet is held apart there but stays 2.3 %
-//! stretched.
+//! *Across the seam.* The kidney with its mirror image at 5/16 and with its copy at 13/16 cross
+//! within 1–4 mm of the seam, between triangles within two edges of each other, which the term
+//! above leaves out (a vertex and a face that close are neighbours on a sound form too, where the
+//! seam is sharp; counted as contacts, with only the faces on a vertex's own edges left out, the
+//! sheet was held apart there but stayed 2.3 % stretched). There the two pieces close through
+//! each other across the seam: the seam's opening (the angle between the pieces across it) goes
+//! from 10° through 0 to the other side. So, where asked, each seam hinge (its two triangles, one
+//! per piece, [`super::hinge`]) keeps its dihedral angle `θ` within `π − CLOSURE` of flat on the
+//! side it had at the last refresh (the angle unwrapped from it, so a step through the closure
+//! costs its whole way past it).
 //!
 //! *Why only as a last resort* ([`super::retry::CONTACT_KB`]). With contact on every path, the
 //! first one (at the homotopy's weight) ended 26–30 % strained through itself on those hearts,
@@ -34,6 +39,7 @@
 //! elsewhere.
 
 use super::glued::SheetMesh;
+use super::hinge::{angle, angle_and_gradient};
 use crate::order::pair_key;
 use crate::simulate::metric::KeyMap;
 use crate::simulate::seam::SeamPieces;
@@ -48,6 +54,15 @@ pub const REACH: f64 = 0.5;
 /// The weight of a contact residual against a membrane one: a vertex `δ` too close costs as
 /// much as an edge stretched by `10 δ`.
 pub const WEIGHT: f64 = 100.0;
+
+/// The smallest opening of the seam (the angle between the two pieces across it), radians: 2°.
+/// Its residual is `√w · (L/n) · (|θ| − (π − CLOSURE))` for a seam hinge bent by `|θ|` beyond
+/// `π − CLOSURE`. At 5° the kidney with its mirror image at 5/16 ended creased and isometric
+/// and the kidney with its copy at 13/16 1.44 % strained, where at 2° the first stays 1.54 %
+/// strained and the second converges; at 10° neither is sound. On every path (at 5°), 6 of the
+/// 240 two-blob pairs that converge without it ended 2.7–7.9 % strained, and the drawn heart with
+/// its copy at 3/16 3.5e-3: seams close below a few degrees on the way to sound forms.
+pub const CLOSURE: f64 = 2.0 * std::f64::consts::PI / 180.0;
 
 /// The contact term of a shell.
 #[derive(Debug, Clone)]
@@ -65,24 +80,49 @@ pub struct Contact {
     pub weight: f64,
     /// The candidates: vertex, face and the side (±1) of the face's plane the vertex keeps.
     pairs: Vec<(usize, usize, f64)>,
+    /// The seam's hinges `(i, j, k, l)` (edge i→j, k in A, l in B, [`super::hinge`]) and their
+    /// dihedral angles at the last refresh, unwrapped (NaN before the first).
+    seam: Vec<[usize; 4]>,
+    seam_angle: Vec<f64>,
+    /// Smallest opening of the seam, radians, and the factor of its residual (a length).
+    closure: f64,
+    seam_scale: f64,
 }
 
-/// One active term: its residual and the gradient rows of vertex `v` and face `f`'s corners.
+/// One active term: its residual, its four vertices and their gradient rows.
 pub struct Term {
     pub v: [usize; 4],
     pub rows: [V3; 4],
     pub r: f64,
-    /// Barycentric weights of the corners (for the majorant of `JᵀJ`).
-    pub b: [f64; 3],
+    /// Factors `m` of a majorant of the term's `JᵀJ`: `Σ_a m_a g_a g_aᵀ` on the diagonal
+    /// blocks is at least `(Σ_a g_a·δ_a)²` for every `δ`.
+    pub major: [f64; 4],
 }
 
 impl Contact {
-    /// Contact between the faces of both pieces of `mesh` ([`GAP`], [`REACH`], [`WEIGHT`]).
-    pub fn on(pieces: &SeamPieces, mesh: &SheetMesh) -> Self {
+    /// Contact between the faces of both pieces of `mesh` ([`GAP`], [`REACH`], [`WEIGHT`]), and
+    /// across the seam ([`CLOSURE`]) when `seam` is set.
+    pub fn on(pieces: &SeamPieces, mesh: &SheetMesh, seam: bool) -> Self {
         let step = pieces.flat[0].perimeter / pieces.n as f64;
         let faces: Vec<[usize; 3]> = mesh.faces.iter().flatten().copied().collect();
         let edges: Vec<(usize, usize)> = faces.iter().flat_map(|f| [(f[0], f[1]), (f[1], f[2]), (f[2], f[0])]).collect();
-        Self::new(mesh.vertex_count(), faces, &edges, GAP * step, REACH * step, WEIGHT)
+        let mut c = Self::new(mesh.vertex_count(), faces, &edges, GAP * step, REACH * step, WEIGHT);
+        if seam {
+            // Each directed edge's tip, per piece; the seam edge i→j of A meets j→i of B (the
+            // faces are in the surface's orientation, [`SheetMesh`]).
+            let tips: [KeyMap; 2] = [0, 1].map(|p| mesh.faces[p].iter().flat_map(|f| (0..3).map(move |m| (pair_key(f[m], f[(m + 1) % 3]), f[(m + 2) % 3]))).collect());
+            let n = mesh.n;
+            c.seam = (0..n)
+                .filter_map(|i| {
+                    let j = (i + 1) % n;
+                    Some([i, j, *tips[0].get(&pair_key(i, j))?, *tips[1].get(&pair_key(j, i))?])
+                })
+                .collect();
+            c.seam_angle = vec![f64::NAN; c.seam.len()];
+            c.closure = CLOSURE;
+            c.seam_scale = WEIGHT.sqrt() * step;
+        }
+        c
     }
 
     /// Contact between `faces` on `n` vertices joined by `edges` (each edge once or more).
@@ -104,7 +144,7 @@ impl Contact {
                 s
             })
             .collect();
-        Contact { faces, near, gap, reach, weight, pairs: Vec::new() }
+        Contact { faces, near, gap, reach, weight, pairs: Vec::new(), seam: Vec::new(), seam_angle: Vec::new(), closure: 0.0, seam_scale: 0.0 }
     }
 
     /// The candidates at `x`: every vertex–face pair within [`Contact::reach`] of each other
@@ -154,6 +194,10 @@ impl Contact {
             }
         }
         self.pairs = pairs;
+        for (h, prev) in self.seam.iter().zip(&mut self.seam_angle) {
+            let t = angle(x[h[0]], x[h[1]], x[h[2]], x[h[3]]);
+            *prev = if prev.is_nan() { t } else { unwrap(t, *prev) };
+        }
     }
 
     /// The active terms at `x`.
@@ -182,12 +226,24 @@ impl Contact {
                 continue;
             }
             let d = u.map(|c| side * sw * c);
+            // (g·δ_v − Σ bᵢ g·δᵢ)² ≤ 2(g·δ_v)² + 2 Σ bᵢ (g·δᵢ)² (Σ bᵢ = 1, Jensen).
             out.push(Term {
                 v: [v, face[0], face[1], face[2]],
                 rows: [d.map(|c| -c), d.map(|c| c * b[0]), d.map(|c| c * b[1]), d.map(|c| c * b[2])],
                 r: sw * (self.gap - s),
-                b,
+                major: [2.0, jensen(b[0]), jensen(b[1]), jensen(b[2])],
             });
+        }
+        for (h, &prev) in self.seam.iter().zip(&self.seam_angle) {
+            let Some((t, grad)) = angle_and_gradient(x[h[0]], x[h[1]], x[h[2]], x[h[3]]) else { continue };
+            let t = if prev.is_nan() { t } else { unwrap(t, prev) };
+            let over = t.abs() - (std::f64::consts::PI - self.closure);
+            if over <= 0.0 {
+                continue;
+            }
+            let k = t.signum() * self.seam_scale;
+            // (Σ g_a·δ_a)² ≤ 4 Σ (g_a·δ_a)² (Cauchy–Schwarz).
+            out.push(Term { v: *h, rows: grad.map(|g| g.map(|c| k * c)), r: self.seam_scale * over, major: [4.0; 4] });
         }
         out
     }
@@ -197,6 +253,17 @@ impl Contact {
         self.terms(x).iter().map(|t| t.r * t.r).sum()
     }
 
+}
+
+/// The majorant factor `2/b` of a corner row `b g` ([`Term::major`]): its block is `2 b g gᵀ`.
+fn jensen(b: f64) -> f64 {
+    if b > 0.0 { 2.0 / b } else { 0.0 }
+}
+
+/// `t` moved by whole turns to within half a turn of `prev`.
+fn unwrap(t: f64, prev: f64) -> f64 {
+    let tau = std::f64::consts::TAU;
+    t + tau * ((prev - t) / tau).round()
 }
 
 /// A face's normal (not unit) and its first corner.
@@ -225,8 +292,13 @@ mod tests {
         assert_eq!(terms.iter().map(|t| t.v[0]).collect::<Vec<_>>(), vec![3], "wanted one term, of vertex 3");
         // √w (gap − s) = 2 (0.1 − 0.05).
         assert!((terms[0].r - 0.1).abs() < 1e-12, "wanted residual 0.1 at height 0.05, got {}", terms[0].r);
-        let b: f64 = terms[0].b.iter().sum();
-        assert!((b - 1.0).abs() < 1e-12 && terms[0].b.iter().all(|&v| v > 0.0), "wanted barycentric weights of an inside point, got {:?}", terms[0].b);
+        // The corners share the push by the projection's barycentric coordinates, (0.5, 0.25,
+        // 0.25) at (0.25, 0.25): rows[k] = −b_k rows[0].
+        let t = &terms[0];
+        for (k, b) in [0.5, 0.25, 0.25].into_iter().enumerate() {
+            let want = t.rows[0].map(|c| -b * c);
+            assert!((0..3).all(|a| (t.rows[k + 1][a] - want[a]).abs() < 1e-12), "corner {k}: wanted row {want:?}, got {:?}", t.rows[k + 1]);
+        }
         // Through the face to −0.05: the side seen first is kept, so the depth counts.
         x[3][2] = -0.05;
         c.refresh(&x);
@@ -244,6 +316,42 @@ mod tests {
         c.refresh(&x);
         let r = c.terms(&x)[0].r;
         assert!((r - 0.1).abs() < 1e-12, "wanted residual 0.1 for a pair seen anew below the face, got {r}");
+    }
+
+    /// A seam hinge `(0, 1, 2, 3)`: edge along x, tip 2 at +y, tip 3 turned about the edge by
+    /// `phi` from the flat position at −y (so `|θ| = phi` and the opening is `π − phi`).
+    fn hinge_scene(phi: f64) -> (Contact, Vec<V3>) {
+        let x = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, 1.0, 0.0], [0.5, -phi.cos(), phi.sin()]];
+        let mut c = Contact::new(4, Vec::new(), &[], 0.1, 0.5, 1.0);
+        (c.seam, c.seam_angle, c.closure, c.seam_scale) = (vec![[0, 1, 2, 3]], vec![f64::NAN], CLOSURE, 3.0);
+        (c, x)
+    }
+
+    #[test]
+    fn a_seam_closing_through_itself_costs_its_whole_way_past_the_closure() {
+        let deg = std::f64::consts::PI / 180.0;
+        let (mut c, mut x) = hinge_scene(170.0 * deg);
+        c.refresh(&x);
+        assert!(c.terms(&x).is_empty(), "wanted no term at an opening of 10° (closure 2°)");
+        let at = |c: &Contact, x: &[V3]| c.terms(x).first().map_or(0.0, |t| t.r);
+        x[3] = hinge_scene(179.0 * deg).1[3];
+        let r = at(&c, &x);
+        assert!((r - 3.0 * deg).abs() < 1e-9, "wanted 3 · 1° (179° against 178°) = {}, got {r}", 3.0 * deg);
+        c.refresh(&x);
+        // Through the closure to 181°: the raw angle reads −179°, the unwrapped one 181°.
+        x[3] = hinge_scene(181.0 * deg).1[3];
+        let r = at(&c, &x);
+        assert!((r - 9.0 * deg).abs() < 1e-9, "wanted 3 · 3° (181° against 178°) = {}, got {r}", 9.0 * deg);
+        // The gradient's rows are the hinge angle's, scaled: the residual grows along them.
+        let t = &c.terms(&x)[0];
+        let h = 1e-7;
+        let mut y = x.clone();
+        for a in 0..3 {
+            y[3][a] += h * t.rows[3][a];
+        }
+        let grew = (at(&c, &y) - r) / h;
+        let wanted: f64 = t.rows[3].iter().map(|v| v * v).sum();
+        assert!((grew - wanted).abs() < 1e-4 * wanted, "wanted a directional derivative of {wanted}, got {grew}");
     }
 
     #[test]

@@ -93,8 +93,8 @@
 //! (the kidney with a congruent copy at 1/16 collapses through itself at the homotopy's last
 //! blend; the drawn heart with its copy at 3/16). Followed again as a thinner or thicker sheet
 //! ([`retry`]), the kidney converges and the drawn heart ends isometric and uncrossed. The
-//! smooth heart with its copy, through itself on every such path, is followed once more with
-//! the sheets pushing each other back where they touch ([`contact`]).
+//! smooth heart with its copy, through itself on every such path, is followed again with the
+//! sheets pushing each other back where they touch ([`contact`]).
 //!
 //! - [`flatmesh`]: each piece meshed by constrained Delaunay refinement, seam samples kept;
 //! - [`saddle`]: the rows of vertices beside the seam where it is a saddle;
@@ -173,24 +173,35 @@ pub const HOMOTOPY_STAGE_STEPS: usize = 20;
 pub const HOMOTOPY_RTOL: f64 = 1e-3;
 
 /// How a path from the twins is followed ([`follow`]): the homotopy's bending weight (`kb /
-/// R²`), and whether the sheets push each other back where they touch ([`contact`]).
+/// R²`), and whether and where the sheets push each other back ([`Touch`], [`contact`]).
 #[derive(Debug, Clone, Copy)]
 pub struct Path {
     pub kb: f64,
-    pub contact: bool,
+    pub touch: Touch,
+}
+
+/// The self-contact of a path's sheet ([`contact`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Touch {
+    /// None: the sheets may pass through each other.
+    Free,
+    /// A vertex is kept off the faces that are not its neighbours.
+    Faces,
+    /// That, and the two pieces do not close through each other across the seam.
+    FacesAndSeam,
 }
 
 impl Path {
     /// The homotopy at bending weight `kb`, without contact.
     pub fn plain(kb: f64) -> Self {
-        Path { kb, contact: false }
+        Path { kb, touch: Touch::Free }
     }
 
-    /// The shell of `mesh`, with contact when the path has it.
+    /// The shell of `mesh`, with the path's contact.
     fn shell(&self, pieces: &SeamPieces, mesh: &SheetMesh) -> Shell {
         let mut shell = mesh.shell();
-        if self.contact {
-            shell.contact = Some(contact::Contact::on(pieces, mesh));
+        if self.touch != Touch::Free {
+            shell.contact = Some(contact::Contact::on(pieces, mesh, self.touch == Touch::FacesAndSeam));
         }
         shell
     }
@@ -275,8 +286,8 @@ pub const STALL_DROP: f64 = 0.01;
 /// Stages of a non-convex pair's solve, for [`crate::simulate::progress`]: the convex path's
 /// first pass, the homotopy's steps, the thinning's stages and the rounds of refinement where
 /// the sheet locks ([`adapt`]), and the other paths a far-off sheet is followed on
-/// ([`retry`]: one per weight of [`retry::KB`], and one with contact).
-pub const STAGES: usize = 1 + HOMOTOPY_STEPS + SCHEDULE.len() + adapt::ROUNDS + retry::KB.len() + 1;
+/// ([`retry`]: one per weight of [`retry::KB`], and one per contact of [`retry::TOUCH`]).
+pub const STAGES: usize = 1 + HOMOTOPY_STEPS + SCHEDULE.len() + adapt::ROUNDS + retry::KB.len() + retry::TOUCH.len();
 
 /// What a relaxation did.
 #[derive(Debug, Clone)]
@@ -451,8 +462,8 @@ pub fn coarse_homotopy(pieces: &SeamPieces, mesh: &SheetMesh, path: Path, report
 /// ([`coarse_homotopy`]), else on `mesh` (on its plain version when `mesh` is `layered` with
 /// rows beside saddles, [`saddle`]); then the thinning on `mesh` through the stages of
 /// [`SCHEDULE`] thinner than the homotopy's bending weight (`path.kb`, as `kb / R²`:
-/// [`HOMOTOPY_KB`] first, [`retry::KB`] when that ends far off), with self-contact when
-/// `path.contact` ([`retry::CONTACT_KB`]). `None` when no twin pair can be built and solved.
+/// [`HOMOTOPY_KB`] first, [`retry::KB`] when that ends far off), with the path's self-contact
+/// ([`Touch`], [`retry::CONTACT_KB`]). `None` when no twin pair can be built and solved.
 pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, layered: bool, path: Path, budget: usize, report: &mut Reporter) -> Option<(Shell, Relaxed)> {
     let (mut shell, x, steps) = match coarse_homotopy(pieces, mesh, path, report) {
         Some((x, steps)) => (path.shell(pieces, mesh), x, steps),

@@ -249,14 +249,11 @@ impl Shell {
                     }
                 }
                 if let Some((diag, _)) = blocks.as_mut() {
-                    // A majorant of the term's JᵀJ on the diagonal blocks:
-                    // (g·δ_v − Σ bᵢ g·δᵢ)² ≤ 2(g·δ_v)² + 2 Σ bᵢ (g·δᵢ)².
-                    let gv = t.rows[0];
-                    for (k, &v) in t.v.iter().enumerate() {
-                        let s = if k == 0 { 2.0 } else { 2.0 * t.b[k - 1] };
+                    // A majorant of the term's JᵀJ on the diagonal blocks (pattern unchanged).
+                    for ((&v, row), m) in t.v.iter().zip(&t.rows).zip(t.major) {
                         for a in 0..3 {
                             for c in 0..3 {
-                                diag[v][a][c] += s * gv[a] * gv[c];
+                                diag[v][a][c] += m * row[a] * row[c];
                             }
                         }
                     }
