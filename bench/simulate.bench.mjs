@@ -139,10 +139,13 @@ function samplingFloor(r) {
 }
 
 // [name, piece, partner (a circle of its perimeter when left out), offset in perimeters]. The
-// last pair ends far off on the homotopy's own weight and is followed again at two others
-// (core/src/simulate/sheet/retry.rs): the slowest kind of solve a slider step can meet.
+// last two pairs end far off on the homotopy's own weight and are followed again
+// (core/src/simulate/sheet/retry.rs): the drawn heart at a thicker weight; the kidney, through
+// itself at every weight, with the sheets touching (sheet/contact.rs). The slowest kinds of
+// solve a slider step can meet.
 const nonConvex = [['Pebble + circle (the browser app sample)', pebble], ['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart + circle', heart], ['heart drawn with corners + circle', drawnHeart], ['rounded star + circle', star],
-  ['heart drawn with corners + its copy at 3/16 (followed again)', drawnHeart, drawnHeart, 3 / 16]];
+  ['heart drawn with corners + its copy at 3/16 (followed again)', drawnHeart, drawnHeart, 3 / 16],
+  ['kidney + its copy at 13/16 (followed again, touching)', kidney, kidney, 13 / 16]];
 for (const [name, a, b, share] of nonConvex) {
   const pieces = [a, b ?? circleFor(a)];
   const offset = (share ?? 0) * m.measure(a).perimeter;
