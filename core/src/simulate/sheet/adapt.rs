@@ -50,7 +50,7 @@ use crate::order::pair_key;
 use crate::simulate::checks::{faces_cross, FOLD_BEND};
 use crate::simulate::metric::KeyMap;
 use super::shell::Shell;
-use super::{refine, thin, Relaxed, SCHEDULE, STRAIN_TARGET};
+use super::{refine, thin, Path, Relaxed, SCHEDULE, STRAIN_TARGET};
 use crate::simulate::progress::Reporter;
 use crate::simulate::seam::SeamPieces;
 use crate::simulate::vec3::{norm, sub, V3};
@@ -172,8 +172,9 @@ impl Lock {
 /// within `budget` steps in all (those `relaxed` took included). Returns the mesh, shell and
 /// shape of the answer: the first round that converged; else, for a stretched sheet, the least
 /// strained of all; else `relaxed` itself (a fold that refinement does not remove is the form's
-/// crease, reported as such). One stage is reported per round.
-pub fn unlock(pieces: &SeamPieces, saddles: &[usize], mesh: SheetMesh, shell: Shell, relaxed: Relaxed, budget: usize, report: &mut Reporter) -> (SheetMesh, Shell, Relaxed) {
+/// crease, reported as such). The finer meshes' shells are `path`'s (with its contact,
+/// [`Path::shell`]). One stage is reported per round.
+pub fn unlock(pieces: &SeamPieces, saddles: &[usize], path: Path, mesh: SheetMesh, shell: Shell, relaxed: Relaxed, budget: usize, report: &mut Reporter) -> (SheetMesh, Shell, Relaxed) {
     let Some(lock) = Lock::of(pieces, &mesh, &shell, &relaxed) else { return (mesh, shell, relaxed) };
     let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
     let from = if lock == Lock::Folded { relaxed.stage } else { RESTART_KB };
@@ -192,7 +193,7 @@ pub fn unlock(pieces: &SeamPieces, saddles: &[usize], mesh: SheetMesh, shell: Sh
         }
         let Some(finer) = SheetMesh::refined(pieces, super::INTERIOR_EDGE, saddles, &extra) else { break };
         let Some(start) = refine::carry(&mesh_now, &x, &finer) else { break };
-        let mut shell = finer.shell();
+        let mut shell = path.shell(pieces, &finer);
         let faces: Vec<[usize; 3]> = finer.faces.iter().flatten().copied().collect();
         let mut quiet = |_| {};
         let mut r = thin(&mut shell, start, radius, budget - steps, &thinner, &faces, &mut Reporter::new(&mut quiet, thinner.len()));

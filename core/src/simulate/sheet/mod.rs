@@ -198,7 +198,7 @@ impl Path {
     }
 
     /// The shell of `mesh`, with the path's contact.
-    fn shell(&self, pieces: &SeamPieces, mesh: &SheetMesh) -> Shell {
+    pub fn shell(&self, pieces: &SeamPieces, mesh: &SheetMesh) -> Shell {
         let mut shell = mesh.shell();
         if self.touch != Touch::Free {
             shell.contact = Some(contact::Contact::on(pieces, mesh, self.touch == Touch::FacesAndSeam));
