@@ -14,8 +14,9 @@
 //!   (creased by 103° and 119°), where it had ended 8.5 % stretched through itself.
 //!
 //! So a sheet that ends far off ([`far_off`]) is followed again at the weights of [`KB`], in
-//! order, until one ends sound: converged, or isometric and uncrossed (creased). The best of all
-//! the attempts is the answer ([`Attempt::grade`]).
+//! order, until one ends sound: converged, or isometric and uncrossed (creased); then, while the
+//! best still passes through itself, with the sheets touching ([`TOUCH`], [`super::contact`]).
+//! The best of all the attempts is the answer ([`Attempt::grade`]).
 //!
 //! *Order and stop.* Of the 18 far-off pairs of 312 (stop 38's set: random pairs of two blobs,
 //! and six drawings with their copies and mirror images at six offsets, 256 seam vertices,
@@ -118,8 +119,8 @@ pub fn attempt(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], path: P
 /// `first`, or when it is far off ([`far_off`]) the best ([`Attempt::grade`]) of it and the
 /// attempts at the weights of [`KB`], tried in order until one is sound ([`Attempt::sound`]),
 /// then while the best still crosses itself at [`CONTACT_KB`] with the contacts of [`TOUCH`],
-/// within `budget` steps in all. The answer's `steps` count every attempt's. One stage is reported per attempt
-/// tried, at the best answer's strain.
+/// within `budget` steps in all. The answer's `steps` count every attempt's. One stage is
+/// reported per attempt tried, at the best answer's strain.
 pub fn others(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], first: Attempt, budget: usize, report: &mut Reporter) -> Attempt {
     if !far_off(&first) {
         return first;
