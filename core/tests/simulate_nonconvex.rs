@@ -179,6 +179,21 @@ fn test_issue_14_smooth_pairs_folded_by_their_mesh_unfold_where_it_is_refined() 
     }
 }
 
+/// Regression: the kidney with a circle at 384 seam vertices stayed folded by 91° between two
+/// triangles after every round of refinement thinned from the stage it folded at. Thinned again
+/// from a thicker sheet (`simulate::sheet::adapt`), it keeps every promise, at a volume within
+/// 1 % of the kidney's at 256 seam vertices.
+#[test]
+fn test_issue_14_a_kidney_with_a_circle_at_384_seam_vertices_unfolds_from_a_thicker_sheet() {
+    let k = shapes::kidney();
+    let circle = shapes::circle_for(&k);
+    let s = run(&k, &circle, 0.0, 384, 5000);
+    println!("384: {} | sharpest bend {:.1}°", mesh_checks::report(&s), max_bend_inside(&s).to_degrees());
+    assert_eq!(promise(&s), Ok(()), "{}", mesh_checks::report(&s));
+    let (v, w) = (volume(&s), volume(&run(&k, &circle, 0.0, 256, 5000)));
+    assert!((v - w).abs() < 0.01 * w, "wanted the volume at 384 within 1 % of 256's ({w:.0}), got {v:.0}");
+}
+
 /// The bundled sample's pair ("Pebble + circle") and the five-lobed shape with a circle were
 /// never converged before the sheet path (1.3 % and 1.4 % strain, folds, reflex chords): now
 /// they must be, at 128 seam vertices, with every promise checked on the mesh — and the mesh has

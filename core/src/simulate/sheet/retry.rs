@@ -109,7 +109,7 @@ pub fn far_off(a: &Attempt) -> bool {
 /// sheet ([`adapt::unlock`]). `None` when no twin pair can be built and solved.
 pub fn attempt(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], path: Path, budget: usize, report: &mut Reporter) -> Option<Attempt> {
     let (shell, r) = follow(pieces, mesh, !saddles.is_empty(), path, budget, report)?;
-    let (mesh, shell, relaxed) = adapt::unlock(pieces, saddles, path, mesh.clone(), shell, r, budget, report);
+    let (mesh, shell, relaxed) = adapt::unlock(pieces, saddles, path, (mesh.clone(), shell, r), budget, report);
     // A converged answer is sound ([`super::finish::sound`]), so it does not cross: only the
     // others are tested, not every pair's answer.
     let crossing = !relaxed.converged && faces_cross(&relaxed.x, &mesh.faces.iter().flatten().copied().collect::<Vec<_>>());
