@@ -57,11 +57,10 @@
 //! again from 1e-6 converged 15 of 16, but in WASM pairs with a cone point then took up to 1.7 s
 //! (the heart with a circle, 0.39 before) for three futile rounds; marking at 45° converged 13.
 
-use super::glued::{cone_samples, SheetMesh};
+use super::glued::{cone_samples, face_of, tip, SheetMesh};
 use super::{finish, hinge};
 use crate::order::pair_key;
 use crate::simulate::checks::{faces_cross, FOLD_BEND};
-use crate::simulate::metric::KeyMap;
 use super::shell::Shell;
 use super::{refine, thin, Path, Relaxed, SCHEDULE, STRAIN_TARGET};
 use crate::simulate::progress::Reporter;
@@ -121,18 +120,12 @@ pub fn strained_centroids(mesh: &SheetMesh, x: &[V3]) -> [Vec<[f64; 2]>; 2] {
 pub fn bent_centroids(mesh: &SheetMesh, x: &[V3], above: f64) -> [Vec<[f64; 2]>; 2] {
     [0, 1].map(|p| {
         let faces = &mesh.faces[p];
-        let mut face_of = KeyMap::default();
-        for (f, t) in faces.iter().enumerate() {
-            for m in 0..3 {
-                face_of.insert(pair_key(t[m], t[(m + 1) % 3]), f);
-            }
-        }
-        let tip = |t: [usize; 3], i: usize, j: usize| t.into_iter().find(|&v| v != i && v != j).unwrap_or(i);
+        let holder = face_of(faces);
         let mut marked = vec![false; faces.len()];
         for (f, t) in faces.iter().enumerate() {
             for m in 0..3 {
                 let (i, j) = (t[m], t[(m + 1) % 3]);
-                if let Some(&g) = face_of.get(&pair_key(j, i)) {
+                if let Some(&g) = holder.get(&pair_key(j, i)) {
                     if i < j && hinge::angle(x[i], x[j], x[tip(*t, i, j)], x[tip(faces[g], j, i)]).abs() > above {
                         marked[f] = true;
                         marked[g] = true;
@@ -185,31 +178,22 @@ impl Lock {
 /// ([`Lock`], see the module docs), within `budget` steps in all (those `relaxed` took
 /// included). Returns the mesh, shell and shape of the answer: the first round that converged;
 /// else, for a stretched sheet, the least strained of all; else `sheet` itself (a fold that
-/// refinement does not remove is the form's
-/// crease, reported as such). A folded sheet is thinned again from the stage it folded at, and
-/// when no round converges, from [`RESTART_KB`] (see the module docs). The finer meshes' shells
-/// are `path`'s (with its contact, [`Path::shell`]). One stage is reported per round of the
-/// first pass.
+/// refinement does not remove is the form's crease, reported as such). A folded sheet is thinned
+/// again from the stage it folded at, and when no round converges, from [`RESTART_KB`] (see the
+/// module docs). The finer meshes' shells are `path`'s (with its contact, [`Path::shell`]). One
+/// stage is reported per round of the first pass.
 pub fn unlock(pieces: &SeamPieces, saddles: &[usize], path: Path, sheet: (SheetMesh, Shell, Relaxed), budget: usize, report: &mut Reporter) -> (SheetMesh, Shell, Relaxed) {
     let (mesh, shell, relaxed) = sheet;
     let Some(lock) = Lock::of(pieces, &mesh, &shell, &relaxed) else { return (mesh, shell, relaxed) };
-    let mut froms = vec![if lock == Lock::Folded { relaxed.stage } else { RESTART_KB }];
-    if lock == Lock::Folded && RESTART_KB > relaxed.stage {
-        froms.push(RESTART_KB);
-    }
+    let from = if lock == Lock::Folded { relaxed.stage } else { RESTART_KB };
     let refiner = Refiner { pieces, saddles, path, lock, origin: (mesh.clone(), relaxed.x.clone()), budget };
     let mut steps = relaxed.steps;
     let mut best = (mesh, shell, relaxed);
-    for (k, &from) in froms.iter().enumerate() {
-        if k == 0 {
-            refiner.rounds(from, &mut best, &mut steps, report);
-        } else {
-            let mut quiet = |_| {};
-            refiner.rounds(from, &mut best, &mut steps, &mut Reporter::new(&mut quiet, ROUNDS));
-        }
-        if best.2.converged {
-            break;
-        }
+    refiner.rounds(from, &mut best, &mut steps, report);
+    if !best.2.converged && RESTART_KB > from {
+        // Only a folded sheet starts below RESTART_KB: its second pass, from a thicker sheet.
+        let mut quiet = |_| {};
+        refiner.rounds(RESTART_KB, &mut best, &mut steps, &mut Reporter::new(&mut quiet, ROUNDS));
     }
     best.2.steps = steps;
     best

@@ -38,7 +38,7 @@
 //! every candidate pair. Tried last, only on answers that still cross, it costs nothing
 //! elsewhere.
 
-use super::glued::SheetMesh;
+use super::glued::{face_of, tip, SheetMesh};
 use super::hinge::{angle, angle_and_gradient};
 use crate::order::pair_key;
 use crate::simulate::metric::KeyMap;
@@ -110,12 +110,13 @@ impl Contact {
         if seam {
             // Each directed edge's tip, per piece; the seam edge i→j of A meets j→i of B (the
             // faces are in the surface's orientation, [`SheetMesh`]).
-            let tips: [KeyMap; 2] = [0, 1].map(|p| mesh.faces[p].iter().flat_map(|f| (0..3).map(move |m| (pair_key(f[m], f[(m + 1) % 3]), f[(m + 2) % 3]))).collect());
+            let holders = [0, 1].map(|p| face_of(&mesh.faces[p]));
+            let across = |p: usize, i: usize, j: usize| holders[p].get(&pair_key(i, j)).map(|&f| tip(mesh.faces[p][f], i, j));
             let n = mesh.n;
             c.seam = (0..n)
                 .filter_map(|i| {
                     let j = (i + 1) % n;
-                    Some([i, j, *tips[0].get(&pair_key(i, j))?, *tips[1].get(&pair_key(j, i))?])
+                    Some([i, j, across(0, i, j)?, across(1, j, i)?])
                 })
                 .collect();
             c.seam_angle = vec![f64::NAN; c.seam.len()];

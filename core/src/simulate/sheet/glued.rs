@@ -44,6 +44,24 @@ pub fn cone_samples(pieces: &SeamPieces) -> Vec<usize> {
         .collect()
 }
 
+/// Each directed edge `i → j` of `faces`, keyed by [`pair_key`]`(i, j)`, and the index of the
+/// face that holds it: the face across edge `i → j` of a consistently oriented mesh is the one
+/// holding `j → i`.
+pub fn face_of(faces: &[[usize; 3]]) -> KeyMap {
+    let mut map = KeyMap::default();
+    for (f, t) in faces.iter().enumerate() {
+        for m in 0..3 {
+            map.insert(pair_key(t[m], t[(m + 1) % 3]), f);
+        }
+    }
+    map
+}
+
+/// The corner of triangle `t` that is neither `i` nor `j` (a hinge's tip on that side).
+pub fn tip(t: [usize; 3], i: usize, j: usize) -> usize {
+    t.into_iter().find(|&v| v != i && v != j).unwrap_or(i)
+}
+
 /// Tries at splitting the chords B shares with A ([`SheetMesh::new`]); each try re-meshes B.
 /// Congruent pieces glued as mirror images (the flat doubly covered form) share the chords of
 /// their tips: the heart with its mirror image had chord 127–130 in both at 256 seam vertices.
@@ -147,18 +165,11 @@ impl SheetMesh {
         let mut edges = Vec::new();
         let mut hinges = Vec::new();
         for p in 0..2 {
-            // Each directed edge's triangle.
-            let mut face_of = KeyMap::default();
-            for (f, t) in self.faces[p].iter().enumerate() {
-                for m in 0..3 {
-                    face_of.insert(pair_key(t[m], t[(m + 1) % 3]), f);
-                }
-            }
-            let tip = |t: [usize; 3], i: usize, j: usize| t.into_iter().find(|&v| v != i && v != j).expect("a triangle has three vertices");
+            let holder = face_of(&self.faces[p]);
             for t in &self.faces[p] {
                 for m in 0..3 {
                     let (i, j) = (t[m], t[(m + 1) % 3]);
-                    match face_of.get(&pair_key(j, i)) {
+                    match holder.get(&pair_key(j, i)) {
                         Some(&g) => {
                             if i < j {
                                 let other = self.faces[p][g];
