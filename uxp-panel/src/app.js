@@ -33,6 +33,8 @@
   var meshOffset = 0;
   var solving = false;
   var solveAgain = false;
+  var solveStarted = 0; // Date.now() when the solve under way was started
+  var supersede = null; // the timer that stops a solve the slider has moved on from
   var exportWanted = ''; // 'obj' / 'stl' clicked while a solve was running: written when it is done
   var exportWhenSolved = null;
   var sweeper = null; // the seam-offset sweep behind the 3D tab's plot (sweep.js)
@@ -564,14 +566,35 @@
     document.body.dataset.solve = ok ? 'ok' : 'error';
   }
   /**
+   * A solve the design has moved on from (the slider was dragged on) is stopped once it has run
+   * this long, ms, and the latest design solved instead. Issue 14 gives a non-convex solve 1 s;
+   * most take 0.3–0.9 s in WebAssembly and are waited for, so a drag keeps showing forms as it
+   * goes. Some take far longer: two copies of the issue's kidney glued at 13/16 of the perimeter
+   * or beyond took 4–9 s each in Chromium, and every slider position after one waited for it. The
+   * solver thread cannot be interrupted, so it is replaced (DF.solver.cancel).
+   */
+  var SUPERSEDE_MS = 1000;
+
+  /** Stops the solve under way SUPERSEDE_MS after it started if a newer one is still wanted then. */
+  function supersedeLater() {
+    clearTimeout(supersede);
+    supersede = setTimeout(function () {
+      if (solving && solveAgain) DF.solver.cancel();
+    }, Math.max(0, solveStarted + SUPERSEDE_MS - Date.now()));
+  }
+
+  /**
    * Solves the 3D form for the current design (on the solver thread when possible). Requests made
    * while a solve runs are coalesced: when it finishes, the latest design is solved, warm-started
-   * from the last solution of the same pieces when the offset moved only a little.
+   * from the last solution of the same pieces when the offset moved only a little. A solve that
+   * is no longer wanted is stopped after SUPERSEDE_MS; the form on show stays until the new one
+   * replaces it.
    */
   function solve3d() {
     if (!viewer) viewer = DF.view3d.create($('#view3d'));
     if (solving) {
       solveAgain = true;
+      supersedeLater();
       return;
     }
     if (!DF.core.has('simulate')) {
@@ -609,6 +632,7 @@
     $('#offset3d').value = String(Math.round((d.offset / d.perimeter) * 1000));
     $('#offset3d-out').textContent = fmt(d.offset);
     solving = true;
+    solveStarted = Date.now();
     document.body.dataset.solving = 'yes';
     var stats3d = $('#stats3d');
     stats3d.dataset.progress = '';
@@ -626,11 +650,13 @@
       set3dMessage(volumeText(st.volume) + ' · ' + areaText(st.area) + ' · strain ' + (st.maxStrain * 100).toFixed(2) + ' %' +
         (st.converged ? '' : ' · not converged'), true, st);
     }, function (e) {
+      if (e.superseded) return; // the design moved on: its solve follows, the form on show stays
       mesh = null;
       viewer.setMesh(null);
       showFigures();
       set3dMessage(e.message, false);
     }).then(function () {
+      clearTimeout(supersede);
       solving = false;
       document.body.dataset.solving = '';
       stats3d.dataset.progress = '';

@@ -1,8 +1,9 @@
 /* D-former panel: `simulate` on a worker thread when the page may start one (http, CEP), else on
  * the UI thread (a page opened from file:// in Chrome may not start workers). Host-agnostic.
  * solve(pieces, options, onProgress?) → Promise<result>; one job at a time, the caller coalesces
- * requests. channel(here) → run(job, onProgress?): a worker of its own for another kind of job (the seam-offset sweep,
- * sweep.js), `here(job)` → Promise the fallback on this thread. */
+ * requests; cancel() stops the solve under way (on a worker only). channel(here) → run(job,
+ * onProgress?): a worker of its own for another kind of job (the seam-offset sweep, sweep.js),
+ * `here(job)` → Promise the fallback on this thread. */
 (function (DF) {
   'use strict';
 
@@ -58,6 +59,24 @@
     run.threaded = function () {
       return !!worker && !failed;
     };
+    /* Stops the jobs under way: the worker is terminated (a solve in WebAssembly cannot be
+     * interrupted any other way; the next job starts a fresh worker) and each job's promise is
+     * rejected with an Error whose `superseded` is true. False when there is nothing to stop: no
+     * job under way, or jobs running on this thread, which cannot be interrupted. */
+    run.cancel = function () {
+      var ids = Object.keys(waiting);
+      if (!worker || !ids.length) return false;
+      worker.terminate();
+      worker = null;
+      ids.forEach(function (id) {
+        var job = waiting[id];
+        delete waiting[id];
+        var e = new Error('This solve was stopped: a newer one replaces it.');
+        e.superseded = true;
+        job.reject(e);
+      });
+      return true;
+    };
     return run;
   }
 
@@ -76,6 +95,11 @@
     channel: channel,
     threaded: function () {
       return simulateJob.threaded();
+    },
+    /** Stops the solve under way on the worker, if any (its promise rejects with `superseded`);
+     *  true when one was stopped. */
+    cancel: function () {
+      return simulateJob.cancel();
     },
   };
 })(window.DF = window.DF || {});
