@@ -3,7 +3,8 @@
 // the core with no other file and no network (every request other than the page itself is
 // refused and counted), load a sample, design, and download a laser SVG, which is then read by
 // Chromium's own SVG engine in a blank page (none of the app's code): two pieces with equal
-// perimeters (getTotalLength), 16 holes each, every hole centre inside its piece (isPointInFill).
+// perimeters (getTotalLength), 16 holes each, every hole centre inside its piece (isPointInFill);
+// then its 3D form, solved on a worker (single-html.mjs says how a page on disk starts one).
 // Not named *.test.mjs: `node --test tests/` runs before the packages exist; tests/release/run.sh
 // runs it after `scripts/package.sh`.
 import { test } from 'node:test';
@@ -79,6 +80,20 @@ test('d-former.html alone on disk: loads offline, designs a sample, downloads a 
       assert.equal(p.holes.length, 16, `wanted 16 holes, got ${p.holes.length}`);
       assert.ok(p.holes.every(Boolean), 'every hole centre inside its piece');
     }
+
+    // The 3D form, solved on a worker started from the page's own text of it (a page opened from
+    // file:// may not start one from a file): the same form as the core on the page gives.
+    await page.click('.tabs button[data-view="3d"]');
+    await page.waitForFunction(() => document.body.dataset.solve && !document.body.dataset.solving, null, { timeout: 60000 });
+    const form = await page.evaluate(() => {
+      const d = window.DF.app.design();
+      return { solve: document.body.dataset.solve, threaded: window.DF.solver.threaded(), shown: window.DF.app.mesh().stats.volume,
+        here: window.DF.core.simulate(d.pieces.map((p) => p.path), { offset: d.offset }).stats.volume };
+    });
+    console.log(`offline page: 3D form solved on a worker: ${form.threaded}, volume ${form.shown} (on the page: ${form.here})`);
+    assert.equal(form.solve, 'ok', await page.textContent('#stats3d'));
+    assert.equal(form.threaded, true, 'the 3D form is solved on a worker, not on the page\'s thread');
+    assert.ok(Math.abs(form.shown - form.here) <= 1e-9 * Math.abs(form.here), `worker ${form.shown} vs page ${form.here}`);
     assert.deepEqual(requests, [], 'the page asked for files or network beside itself');
     assert.deepEqual(errors, []);
   } finally {

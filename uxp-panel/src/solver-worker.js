@@ -7,11 +7,17 @@
  * stage of a non-convex pair's solve (the core's `simulateWithProgress`). */
 /* global dformerWasm, importScripts */
 'use strict';
-importScripts('../wasm/dformer.js', 'sweep-point.js');
-try {
-  importScripts('../wasm/dformer-wasm-inline.js');
-} catch (missing) {
-  void missing; // not built with inline bytes: fetch the .wasm instead
+// The one-file browser app (uxp-panel/tools/single-html.mjs) starts this worker from a Blob of its
+// own text with the core's glue and sweep-point.js before it, and posts the WASM bytes
+// ({ op: 'wasm', base64 }) as its first message: a page opened from file:// may start such a
+// worker but not one from a file, and the bytes are in the page already.
+if (typeof self.dformerWasm === 'undefined') {
+  importScripts('../wasm/dformer.js', 'sweep-point.js');
+  try {
+    importScripts('../wasm/dformer-wasm-inline.js');
+  } catch (missing) {
+    void missing; // not built with inline bytes: fetch the .wasm instead
+  }
 }
 
 function base64Bytes(b64) {
@@ -21,12 +27,21 @@ function base64Bytes(b64) {
   return bytes;
 }
 
-var ready = dformerWasm.default({
-  module_or_path: self.DFORMER_WASM_BASE64 ? base64Bytes(self.DFORMER_WASM_BASE64) : '../wasm/dformer_bg.wasm',
-});
+var bytesFromPage = null;
+var ready = self.DFORMER_WASM_FROM_PAGE
+  ? new Promise(function (resolve) { bytesFromPage = resolve; }).then(function (b64) {
+    return dformerWasm.default({ module_or_path: base64Bytes(b64) });
+  })
+  : dformerWasm.default({
+    module_or_path: self.DFORMER_WASM_BASE64 ? base64Bytes(self.DFORMER_WASM_BASE64) : '../wasm/dformer_bg.wasm',
+  });
 
 self.onmessage = function (e) {
   var job = e.data;
+  if (job.op === 'wasm') {
+    if (bytesFromPage) bytesFromPage(job.base64);
+    return;
+  }
   ready.then(
     function () {
       var result;

@@ -1,11 +1,26 @@
-/* D-former panel: `simulate` on a worker thread when the page may start one (http, CEP), else on
- * the UI thread (a page opened from file:// in Chrome may not start workers). Host-agnostic.
+/* D-former panel: `simulate` on a worker thread (http, CEP, and the one-file app opened from
+ * file://), else on the UI thread (the app's folder opened from file://, where Chrome starts no
+ * worker from a file). Host-agnostic.
  * solve(pieces, options, onProgress?) → Promise<result>; one job at a time, the caller coalesces
  * requests; cancel() stops the solve under way (on a worker only). channel(here) → run(job,
  * onProgress?): a worker of its own for another kind of job (the seam-offset sweep, sweep.js),
  * `here(job)` → Promise the fallback on this thread. */
 (function (DF) {
   'use strict';
+
+  var bundledUrl = null;
+
+  /** A solver worker: from the page's own text of it where the one-file app carries one (a page
+   *  opened from file:// may start a worker from a Blob, not from a file; the WASM bytes are
+   *  posted from the page), else from src/solver-worker.js. */
+  function newWorker() {
+    var bundled = document.getElementById('dformer-worker-source');
+    if (!bundled || !window.DFORMER_WASM_BASE64) return new Worker('src/solver-worker.js');
+    if (!bundledUrl) bundledUrl = URL.createObjectURL(new Blob([bundled.textContent], { type: 'text/javascript' }));
+    var w = new Worker(bundledUrl);
+    w.postMessage({ op: 'wasm', base64: window.DFORMER_WASM_BASE64 });
+    return w;
+  }
 
   function channel(here) {
     var worker = null;
@@ -16,7 +31,7 @@
     function start() {
       if (worker || failed || typeof Worker !== 'function') return worker;
       try {
-        worker = new Worker('src/solver-worker.js');
+        worker = newWorker();
       } catch (e) {
         void e;
         failed = true;
