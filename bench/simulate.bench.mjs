@@ -170,6 +170,27 @@ for (const [name, a, b, share] of nonConvex) {
   console.log(`  sampling floor: no mesh on these seam samples gets below max edge strain ${floor.toExponential(2)} (≤ 1e-3 needed) ${mark(floor <= 1e-3)}${floor > 1e-3 ? ' — the samples, not the solver, rule out a converged answer' : ''}`);
 }
 
+// The whole slider of a classic D-form, two congruent pieces: an organic piece with its copy and
+// with its mirror image, one solve at each of 16 offsets (k/16 of the perimeter), as the panel's
+// slider and its sweep meet them. Printed: how many converged, the median and largest time, and
+// the offsets that take over the 1 s a slider step may take or do not converge. (In the panel the
+// slider does not wait for a solve it has moved on from for more than 1 s: uxp-panel/src/app.js.)
+const mirrored = (path) => ({ closed: true, points: path.points.map((q) => ({ anchor: [-q.anchor[0], q.anchor[1]], left: [-q.right[0], q.right[1]], right: [-q.left[0], q.left[1]] })).reverse() });
+for (const [name, a, b] of [['Pebble + its copy', pebble, pebble], ['kidney + its copy', kidney, kidney], ['kidney + its mirror image', kidney, mirrored(kidney)]]) {
+  const P = m.measure(a).perimeter;
+  const runs = [];
+  for (let k = 0; k < 16; k++) {
+    const t0 = performance.now();
+    const s = m.simulate([a, b], { offset: (k / 16) * P, resolution: 256 }).stats;
+    runs.push({ k, ms: performance.now() - t0, converged: s.converged, shortfall: s.shortfall });
+  }
+  const times = runs.map((r) => r.ms).sort((x, y) => x - y);
+  const slow = runs.filter((r) => r.ms > 1000 || !r.converged).map((r) => `${r.k}/16 ${(r.ms / 1000).toFixed(1)} s${r.converged ? '' : ` ${r.shortfall}`}`);
+  const conv = runs.filter((r) => r.converged).length;
+  console.log(`== ${name}, the whole slider (WASM, non-convex, 256 seam vertices, 16 offsets) ==`);
+  console.log(`  converged ${conv} of 16 ${mark(conv === 16)}   time median ${(times[7] / 2 + times[8] / 2).toFixed(0)} ms, largest ${times[15].toFixed(0)} ms (≤ 1000 ms) ${mark(times[15] <= 1000)}${slow.length ? `   over 1 s or not converged: ${slow.join(', ')}` : ''}`);
+}
+
 // Issue 14, convex pairs whose creases cross the seam: two congruent rectangles with 1 mm
 // rounded corners (the classic D-form of two equal pieces). The chord meshes cannot hold a crease
 // across the seam, so these take the intrinsic path (convex/crossing.rs) after the quick chord
