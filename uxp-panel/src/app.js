@@ -497,7 +497,28 @@
     $('#sweep-status').textContent = DF.form3d.sweepText(st, best, fmt);
     $('#sweep-largest').disabled = !best.largest || current === null;
     $('#sweep-tallest').disabled = !best.tallest || current === null;
+    showExact();
     document.body.dataset.sweep = st.error ? 'error' : st.done ? 'done' : st.running ? 'running' : '';
+  }
+  /**
+   * Where the form on show is approximate, the sweep under the slider may already know seam
+   * offsets whose form is exact (two copies of an organic piece converge at most offsets and
+   * fold or stretch at a few): the nearest of them, or null. Only for the pieces on show.
+   */
+  function nearestExact() {
+    if (!sweeper || !mesh || mesh.stats.converged || !design || !design.ok || view !== '3d') return null;
+    var st = sweeper.state();
+    if (!st.key || st.key !== meshKey || st.key !== piecesKey(design)) return null;
+    return DF.sweep.nearest(st.points, meshOffset / design.perimeter);
+  }
+  /** The "Nearest exact" button and the approximate warning's pointer to it, for the sweep so far. */
+  function showExact() {
+    var p = nearestExact();
+    $('#sweep-exact').disabled = !p;
+    var warn = $('#warn3d');
+    if (warn.hidden || !mesh) return;
+    warn.textContent = approximateText(mesh.stats) + (p ? ' Other seam offsets give an exact form; the nearest found so far is ' +
+      fmt(p.offset) + ': Nearest exact, under the plot, moves the slider there.' : '');
   }
   /** Moves the seam offset to arc length `o` (what the slider does, without its 1/1000 steps). */
   function seek(o) {
@@ -649,6 +670,7 @@
       var st = mesh.stats;
       set3dMessage(volumeText(st.volume) + ' · ' + areaText(st.area) + ' · strain ' + (st.maxStrain * 100).toFixed(2) + ' %' +
         (st.converged ? '' : ' · not converged'), true, st);
+      showExact();
     }, function (e) {
       if (e.superseded) return; // the design moved on: its solve follows, the form on show stays
       mesh = null;
@@ -692,6 +714,10 @@
     });
     $('#sweep-plot').addEventListener('click', function (e) {
       if (design && design.ok) seek(DF.sweepPlot.fractionAt($('#sweep-plot'), e.clientX) * design.perimeter);
+    });
+    $('#sweep-exact').addEventListener('click', function () {
+      var p = nearestExact();
+      if (p) seek(p.offset);
     });
     [['#sweep-largest', 'volume'], ['#sweep-tallest', 'height']].forEach(function (b) {
       $(b[0]).addEventListener('click', function () {

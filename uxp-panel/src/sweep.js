@@ -101,5 +101,22 @@
     return out;
   }
 
-  DF.sweep = { create: create, order: order, best: best, COUNT: COUNT };
+  /** The converged sampled point nearest to `fraction` of the perimeter, going either way round
+   *  the seam (the offset is periodic), or null when none converged. */
+  function nearest(points, fraction) {
+    var out = null;
+    var dist = Infinity;
+    points.forEach(function (p) {
+      if (!p.converged) return;
+      var d = Math.abs(p.fraction - fraction) % 1;
+      d = Math.min(d, 1 - d);
+      if (d < dist) {
+        dist = d;
+        out = p;
+      }
+    });
+    return out;
+  }
+
+  DF.sweep = { create: create, order: order, best: best, nearest: nearest, COUNT: COUNT };
 })(window.DF = window.DF || {});
