@@ -302,6 +302,30 @@ pub fn faces_cross(x: &[V3], faces: &[[usize; 3]]) -> bool {
     false
 }
 
+/// Whether `t` triangulates its polygon: `n − 2` triangles, each seam edge `k → k+1` on exactly
+/// one of them, every other edge on exactly two, once each way. A triangulation that fails it
+/// has overlapping triangles or a hole, and the glued mesh is no closed 2-manifold whatever its
+/// lengths: two thin triangles glued to their copies at 829.7 of 229.6 mm (the intrinsic
+/// path, [`super::convex::crossing`], had re-triangulated around the seam crossings it added)
+/// were called converged with an edge of three triangles and an open one.
+pub fn triangulates_polygon(t: &Triangulation) -> bool {
+    let n = t.len();
+    if n < 3 || t.tris.len() != n - 2 {
+        return false;
+    }
+    let mut seen: std::collections::HashSet<(usize, usize)> = std::collections::HashSet::with_capacity(3 * t.tris.len());
+    for tri in &t.tris {
+        for m in 0..3 {
+            let (a, b) = (tri[m], tri[(m + 1) % 3]);
+            if a >= n || b >= n || a == b || !seen.insert((a, b)) {
+                return false;
+            }
+        }
+    }
+    seen.iter().all(|&(a, b)| if (a + 1) % n == b { !seen.contains(&(b, a)) } else { seen.contains(&(b, a)) })
+        && (0..n).all(|k| seen.contains(&(k, (k + 1) % n)))
+}
+
 /// Whether a chord is in both pieces' triangulations: that edge would bound four triangles, and
 /// the mesh would not be a 2-manifold.
 pub fn shared_chord(tri: &[Triangulation; 2]) -> bool {

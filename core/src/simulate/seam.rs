@@ -134,6 +134,10 @@ impl Glue {
         // the kink's turn, and the samples nested between it and the kink would all lie in it
         // (a rectangle whose corners are rounded at 0.05 mm and whose first anchor starts a
         // corner had seam edges of 0.009 mm across that corner, 18 % apart on A and B).
+        // The offset is periodic: taken as given, 1e12 mm and more lost B's samples to round-off
+        // (a circle with its copy came back crossing, then stretched, and from 1e16 "too thin or
+        // too detailed for 32 seam vertices").
+        let offset = offset.rem_euclid(pb);
         let starts = [0.0, offset];
         let window = KINK_WINDOW * pa / REFERENCE;
         let origin = (0..2)

@@ -1,7 +1,7 @@
 //! Which path solves a gluing: the convex (Alexandrov) path for two convex pieces, the sheet path
 //! for a pair with a non-convex piece.
 
-use super::checks::{is_convex_polygon, max_bend, self_intersecting, shared_chord, FOLD_BEND};
+use super::checks::{is_convex_polygon, max_bend, self_intersecting, triangulates_polygon, FOLD_BEND};
 use super::convex;
 use super::mesh::{flatten_near_planar, unshare_planar, Solution};
 use super::metric::Triangulation;
@@ -25,14 +25,15 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
     Ok((pieces, sol))
 }
 
-/// Whether a mesh is what a sheet can be: a 2-manifold (no chord in both pieces,
-/// [`shared_chord`]), no self-intersection ([`self_intersecting`]) and, when `folds` is set (a
-/// pair with a non-convex piece), no fold inside a piece (a bend above [`FOLD_BEND`],
-/// [`max_bend`]). A convex pair's answer has been checked convex, and a sharp chord of it is an
+/// Whether a mesh is what a sheet can be: a closed 2-manifold (each piece's triangles
+/// triangulate its polygon, [`triangulates_polygon`]; a chord in both pieces is split in B when
+/// the mesh is written out, [`super::stats::finish`]), no self-intersection
+/// ([`self_intersecting`]) and, when `folds` is set (a pair with a non-convex piece), no fold
+/// inside a piece (a bend above [`FOLD_BEND`], [`max_bend`]). A convex pair's answer has been checked convex, and a sharp chord of it is an
 /// edge of its Alexandrov polyhedron (a triangle with a square bends by 90–99° along the
 /// creases between corners), not a fold the sheet would not take; a non-convex pair's answer
 /// often is a fold: the kidney of issue 14 with a circle ended isometric to 2e-2 with chords
 /// bent by 175° through the other sheet.
 pub fn sound(x: &[V3], tri: &[Triangulation; 2], folds: bool) -> bool {
-    !shared_chord(tri) && !(folds && max_bend(x, tri) > FOLD_BEND) && !self_intersecting(x, tri)
+    tri.iter().all(triangulates_polygon) && !(folds && max_bend(x, tri) > FOLD_BEND) && !self_intersecting(x, tri)
 }

@@ -276,6 +276,11 @@ pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
         }
     }
 
+    if sol.converged {
+        // Only an isometric answer: in a strained one a triangle's new inner edge (a median)
+        // may be strained more than its sides, which `max_strain` below would not see.
+        split_shared_chords(&mut x, &mut triangles, &mut flat, &mut piece);
+    }
     let (area, angle_sum) = area_and_angle_sums(&x, &triangles);
     let flat_area = pieces.flat[0].area + pieces.flat[1].area;
     // Vertices 0..n are the seam; any further vertex would be interior (this mesh has none).
@@ -311,4 +316,63 @@ pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
         shortfall: None,
     };
     Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, creases: Vec::new(), stats }
+}
+
+/// Splits each chord that both pieces' triangles have (an edge of four triangles: no
+/// 2-manifold) of an isometric answer at its midpoint in piece B: B's two triangles on it become four around a new
+/// vertex at the chord's midpoint, in 3D and on B's flat piece. A triangle is planar, so the
+/// split keeps every length and the shape. Such chords are where the two sheets lie on each
+/// other: the flat doubly covered D-form of two congruent polygons, whose triangulations are
+/// each other's mirror image (two 80 × 50 mm rectangles at 50 mm: every chord shared where
+/// flipping one is no help, its quad being degenerate on the straight sides).
+fn split_shared_chords(x: &mut Vec<V3>, triangles: &mut Vec<[usize; 3]>, flat: &mut Vec<[[f64; 2]; 3]>, piece: &mut Vec<u8>) {
+    let key = |i: usize, j: usize| (i.min(j), i.max(j));
+    // Each edge's triangles, per piece; B's kept up to date as its triangles are split.
+    let mut holders: std::collections::HashMap<(usize, usize), [Vec<usize>; 2]> = std::collections::HashMap::new();
+    for (t, tri) in triangles.iter().enumerate() {
+        for m in 0..3 {
+            holders.entry(key(tri[m], tri[(m + 1) % 3])).or_default()[piece[t] as usize].push(t);
+        }
+    }
+    let mut shared: Vec<(usize, usize)> = holders.iter().filter(|(_, h)| h[0].len() == 2 && h[1].len() == 2).map(|(&e, _)| e).collect();
+    shared.sort_unstable();
+    for (i, j) in shared {
+        let v = x.len();
+        x.push([0, 1, 2].map(|a| 0.5 * (x[i][a] + x[j][a])));
+        let on = holders.get(&(i, j)).map(|h| h[1].clone()).unwrap_or_default();
+        for t in on {
+            // Triangle (p, q, r) with the chord as p → q: (p, v, r) in its place, (v, q, r) new.
+            let (tri, f) = (triangles[t], flat[t]);
+            let Some(m) = (0..3).find(|&m| key(tri[m], tri[(m + 1) % 3]) == (i, j)) else { continue };
+            let (p, q, r) = (tri[m], tri[(m + 1) % 3], tri[(m + 2) % 3]);
+            let mid = [0.5 * (f[m][0] + f[(m + 1) % 3][0]), 0.5 * (f[m][1] + f[(m + 1) % 3][1])];
+            let u = triangles.len();
+            let (mut first, mut second) = (tri, tri);
+            first[(m + 1) % 3] = v;
+            second[m] = v;
+            let (mut f1, mut f2) = (f, f);
+            f1[(m + 1) % 3] = mid;
+            f2[m] = mid;
+            triangles[t] = first;
+            flat[t] = f1;
+            triangles.push(second);
+            flat.push(f2);
+            piece.push(1);
+            let mut edit = |e: (usize, usize), add: Option<usize>, drop: Option<usize>| {
+                let list = &mut holders.entry(key(e.0, e.1)).or_default()[1];
+                if let Some(d) = drop {
+                    list.retain(|&w| w != d);
+                }
+                if let Some(a) = add {
+                    list.push(a);
+                }
+            };
+            edit((p, q), None, Some(t));
+            edit((q, r), Some(u), Some(t));
+            edit((p, v), Some(t), None);
+            edit((v, r), Some(t), None);
+            edit((v, q), Some(u), None);
+            edit((r, v), Some(u), None);
+        }
+    }
 }

@@ -130,23 +130,26 @@ pub(crate) fn put_back(pieces: &SeamPieces, keep: &[usize], cut: &SeamPieces, x:
         .collect();
     let mut out = Vec::with_capacity(2);
     for t in tri {
-        let mut tris = Vec::with_capacity(t.tris.len() + total - m);
-        let mut split = vec![false; t.tris.len()];
+        // Each seam edge u → w with samples put back: the triangle that holds it now is replaced
+        // by the fan u → samples → w from its third corner. One after the other, so that a
+        // triangle with samples on two of its sides (an ear of the few kept points) is split
+        // again where its first fan left that side: splitting the original twice overlapped
+        // (two 80 × 50 mm rectangles glued 5 mm from their flat gluing came back with an edge
+        // of three triangles and an open one, and were called unsettled).
+        let mut tris: Vec<[usize; 3]> = t.tris.iter().map(|tr| tr.map(|v| new_of[v])).collect();
         for (j, on_edge) in inside.iter().enumerate() {
             if on_edge.is_empty() {
                 continue;
             }
-            let (u, w) = (j, (j + 1) % m);
-            let (ti, c) = t.tris.iter().enumerate().find_map(|(ti, tr)| (0..3).find(|&c| tr[c] == u && tr[(c + 1) % 3] == w).map(|c| (ti, c)))?;
-            split[ti] = true;
-            let apex = t.tris[ti][(c + 2) % 3];
-            // The fan u → samples → w, each triangle counter-clockwise like the one it splits.
-            let mut chain = vec![new_of[u]];
-            chain.extend((1..=on_edge.len()).map(|s| new_of[u] + s));
-            chain.push(new_of[w]);
-            tris.extend(chain.windows(2).map(|e| [e[0], e[1], new_of[apex]]));
+            let (u, w) = (new_of[j], new_of[(j + 1) % m]);
+            let (ti, c) = tris.iter().enumerate().find_map(|(ti, tr)| (0..3).find(|&c| tr[c] == u && tr[(c + 1) % 3] == w).map(|c| (ti, c)))?;
+            let apex = tris.swap_remove(ti)[(c + 2) % 3];
+            // Counter-clockwise like the triangle it splits.
+            let mut chain = vec![u];
+            chain.extend((1..=on_edge.len()).map(|s| u + s));
+            chain.push(w);
+            tris.extend(chain.windows(2).map(|e| [e[0], e[1], apex]));
         }
-        tris.extend(t.tris.iter().zip(&split).filter(|(_, &s)| !s).map(|(tr, _)| tr.map(|v| new_of[v])));
         out.push(Triangulation::from_tris(total, tris));
     }
     let tri = [out.remove(0), out.remove(0)];
