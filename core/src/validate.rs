@@ -197,7 +197,10 @@ fn pair_intersects(a: &Seg, b: &Seg, next: bool, wrap: bool) -> bool {
     if collinear_overlap(&a.c, &b.c) {
         return true;
     }
-    // Non-adjacent segments touching at an anchor (lyon drops endpoint/endpoint hits).
+    // Non-adjacent segments touching at an anchor (lyon drops endpoint/endpoint hits), or an
+    // anchor of one within TOUCH of the other (lyon drops hits at t = 0 or 1 too: a figure of eight
+    // through an anchor of 11 straight sides, glued to itself, passed and then failed with
+    // "too thin or too detailed for 32 seam vertices").
     if joins.is_empty() {
         for p in [a.c.p0, a.c.p3] {
             for q in [b.c.p0, b.c.p3] {
@@ -205,6 +208,10 @@ fn pair_intersects(a: &Seg, b: &Seg, next: bool, wrap: bool) -> bool {
                     return true;
                 }
             }
+        }
+        let on = |p: Point, c: &CubicBez| kurbo::ParamCurveNearest::nearest(c, p, 1e-3 * TOUCH).distance_sq < TOUCH * TOUCH;
+        if [a.c.p0, a.c.p3].into_iter().any(|p| on(p, &b.c)) || [b.c.p0, b.c.p3].into_iter().any(|p| on(p, &a.c)) {
+            return true;
         }
     }
     let la = lyon(&a.c);

@@ -96,6 +96,26 @@ fn touching_anchors_and_overlapping_edges_count() {
     assert!(crossing(&overlap).is_some(), "wanted a crossing for edges lying on each other");
 }
 
+/// Regression (stop 40's fuzz campaign of `simulate`): a figure of eight of 11 straight sides
+/// whose crossing is an anchor lying on a side that is not its own passed `measure`, and
+/// `simulate` then said the piece was "too thin or too detailed for 32 seam vertices". The
+/// anchor is (0, 0); the side from point 5 to point 6 passes through it.
+#[test]
+fn test_an_anchor_lying_on_another_side_is_a_crossing() {
+    let eight = polygon(&[
+        [0.0, 0.0], [16.86508585320746, 14.187813055511953], [28.3756261110239, 11.787661089847662], [30.877105571183677, -4.394270285710152],
+        [23.575322179695323, -15.438552785591835], [8.788540571420311, -8.432542926603729], [-8.788540571420302, 8.432542926603722],
+        [-23.57532217969532, 15.438552785591838], [-30.877105571183673, 4.394270285710158], [-28.37562611102391, -11.787661089847655],
+        [-16.865085853207457, -14.187813055511949],
+    ]);
+    // Independently: the anchor is within round-off of the line through points 5 and 6.
+    let (p, q): (P, P) = ([8.788540571420311, -8.432542926603729], [-8.788540571420302, 8.432542926603722]);
+    let off_line = (p[0] * q[1] - p[1] * q[0]).abs() / ((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1])).sqrt();
+    assert!(off_line < 1e-13, "precondition: (0, 0) on side 5, got {off_line:e} off it");
+    let got = crossing(&eight);
+    assert!(matches!(got, Some((_, 5))) || matches!(got, Some((5, _))), "wanted side 5 named in a crossing, got {got:?}");
+}
+
 #[test]
 fn one_moved_anchor_in_a_thousand_segments_is_found() {
     let mut b = blob(1000);
