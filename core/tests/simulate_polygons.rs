@@ -37,11 +37,14 @@ fn assert_sound(s: &Simulation, what: &str) {
 /// "unsettled", isometric to 1e-9 but with an edge of three triangles and an open one: the
 /// crossing path solves such a gluing on its corners and puts the straight sides' samples back,
 /// and a triangle with samples on two of its sides was split twice over (`convex/flat.rs`,
-/// `put_back`). Now every offset converges at 128 seam vertices, and at 256 all but 10 of 260.
+/// `put_back`). Then 10 offsets at 256 still ended unsettled, isometric and closed (39, 40, 51,
+/// 60, 62 mm and their mirror offsets): the corners-only solve called its answer good with a
+/// reflex chord, a crease crossing the seam between samples, so the intrinsic path that holds
+/// such creases never ran (`convex::solve_cold`). Now every offset converges at 128 and at 256.
 #[test]
 fn test_issue_14_sharp_rectangles_near_their_flat_gluing_converge_as_mirror_images() {
     let rect = shapes::polyline(&[(0.0, 0.0), (80.0, 0.0), (80.0, 50.0), (0.0, 50.0)]);
-    for (n, deltas) in [(128, vec![1.0, 3.0, 5.0, 7.0, 9.0]), (256, vec![3.0, 5.0, 8.0])] {
+    for (n, deltas) in [(128, vec![1.0, 3.0, 5.0, 7.0, 9.0]), (256, vec![1.0, 3.0, 5.0, 8.0, 10.0, 11.0, 12.0])] {
         for d in deltas {
             let pair = [50.0 - d, 50.0 + d].map(|o| {
                 let s = run(&rect, &rect, o, n);
