@@ -74,6 +74,24 @@ fn test_issue_14_the_flat_gluing_of_two_rectangles_is_a_closed_doubly_covered_sh
     }
 }
 
+/// Regression (second fuzz round): a convex 11-gon with its mirror image at offset 0 folds flat,
+/// every chord in both pieces. Split at its midpoint, a chord spanning an even number of evenly
+/// spaced samples on a straight side put the new vertex on a seam sample: a zero-length edge
+/// whose relative "strain" of 5.8e-2 was round-off, in an answer called converged.
+#[test]
+fn test_issue_14_a_flat_gluing_split_along_its_shared_chords_keeps_every_edge() {
+    let a = shapes::polyline(&[
+        (39.69792232927599, 14.827473689456214), (16.18201817703833, 45.51238785575054), (10.4212360484459, 45.27550391371281),
+        (-38.23000658777183, -19.32282572331707), (-6.215059270007078, -44.25405798002695), (3.7940680999662995, -46.448122066491756),
+        (7.001332064800156, -47.15117463250915), (10.278179412647512, -47.8694803166098), (16.201686675669812, -45.06992757226995),
+        (20.253833423410764, -43.15481241424143), (37.08759528605896, -22.411330406159735),
+    ]);
+    let s = run(&a, &shapes::mirrored(&a), 0.0, 128);
+    assert_sound(&s, "the 11-gon with its mirror image at 0");
+    let shortest = s.triangles.iter().flat_map(|t| (0..3).map(move |m| (t[m], t[(m + 1) % 3]))).map(|(i, j)| mesh_checks::norm(mesh_checks::sub(s.vertices[i], s.vertices[j]))).fold(f64::INFINITY, f64::min);
+    assert!(shortest > 1e-6, "no zero-length edge: the shortest is {shortest:.3e} mm");
+}
+
 /// Regression (fuzz): thin triangles and a thin rhombus glued to their copies were called
 /// converged with an edge of three triangles and an open one (the same double split). Whatever
 /// the verdict, `converged` must mean a closed 2-manifold.

@@ -318,10 +318,17 @@ pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
     Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, creases: Vec::new(), stats }
 }
 
+/// Where along a shared chord `i → j` ([`split_shared_chords`]) the new vertex goes: not at the
+/// midpoint, which is a seam sample when the chord spans an even number of evenly spaced samples
+/// on a straight side (a convex 11-gon with its mirror image at offset 0, 128 seam vertices: a
+/// zero-length edge whose "strain" of 5.8e-2 was round-off), but at the golden section, which
+/// no such even spacing hits.
+const SPLIT_AT: f64 = 0.618_033_988_749_894_8;
+
 /// Splits each chord that both pieces' triangles have (an edge of four triangles: no
-/// 2-manifold) of an isometric answer at its midpoint in piece B: B's two triangles on it become four around a new
-/// vertex at the chord's midpoint, in 3D and on B's flat piece. A triangle is planar, so the
-/// split keeps every length and the shape. Such chords are where the two sheets lie on each
+/// 2-manifold) of an isometric answer in piece B: B's two triangles on it become four around a
+/// new vertex on the chord ([`SPLIT_AT`]), in 3D and on B's flat piece. A triangle is planar, so
+/// the split keeps every length and the shape. Such chords are where the two sheets lie on each
 /// other: the flat doubly covered D-form of two congruent polygons, whose triangulations are
 /// each other's mirror image (two 80 × 50 mm rectangles at 50 mm: every chord shared where
 /// flipping one is no help, its quad being degenerate on the straight sides).
@@ -338,14 +345,16 @@ fn split_shared_chords(x: &mut Vec<V3>, triangles: &mut Vec<[usize; 3]>, flat: &
     shared.sort_unstable();
     for (i, j) in shared {
         let v = x.len();
-        x.push([0, 1, 2].map(|a| 0.5 * (x[i][a] + x[j][a])));
+        x.push([0, 1, 2].map(|a| x[i][a] + SPLIT_AT * (x[j][a] - x[i][a])));
         let on = holders.get(&(i, j)).map(|h| h[1].clone()).unwrap_or_default();
         for t in on {
             // Triangle (p, q, r) with the chord as p → q: (p, v, r) in its place, (v, q, r) new.
             let (tri, f) = (triangles[t], flat[t]);
             let Some(m) = (0..3).find(|&m| key(tri[m], tri[(m + 1) % 3]) == (i, j)) else { continue };
             let (p, q, r) = (tri[m], tri[(m + 1) % 3], tri[(m + 2) % 3]);
-            let mid = [0.5 * (f[m][0] + f[(m + 1) % 3][0]), 0.5 * (f[m][1] + f[(m + 1) % 3][1])];
+            // The same point of the chord i → j on the flat piece (p → q may run either way).
+            let (fi, fj) = if p == i { (f[m], f[(m + 1) % 3]) } else { (f[(m + 1) % 3], f[m]) };
+            let mid = [fi[0] + SPLIT_AT * (fj[0] - fi[0]), fi[1] + SPLIT_AT * (fj[1] - fi[1])];
             let u = triangles.len();
             let (mut first, mut second) = (tri, tri);
             first[(m + 1) % 3] = v;
