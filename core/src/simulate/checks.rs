@@ -305,9 +305,9 @@ pub fn faces_cross(x: &[V3], faces: &[[usize; 3]]) -> bool {
 /// Whether `t` triangulates its polygon: `n − 2` triangles, each seam edge `k → k+1` on exactly
 /// one of them, every other edge on exactly two, once each way. A triangulation that fails it
 /// has overlapping triangles or a hole, and the glued mesh is no closed 2-manifold whatever its
-/// lengths: two thin triangles glued to their copies at 829.7 of 229.6 mm (the intrinsic
-/// path, [`super::convex::crossing`], had re-triangulated around the seam crossings it added)
-/// were called converged with an edge of three triangles and an open one.
+/// lengths: a thin triangle glued to its copy 29.7 mm along its 200 mm perimeter was called
+/// converged with an edge of three triangles and an open one (the intrinsic path had put its
+/// straight sides' samples back by splitting one triangle twice, [`super::convex::flat`]).
 pub fn triangulates_polygon(t: &Triangulation) -> bool {
     let n = t.len();
     if n < 3 || t.tris.len() != n - 2 {
@@ -324,13 +324,6 @@ pub fn triangulates_polygon(t: &Triangulation) -> bool {
     }
     seen.iter().all(|&(a, b)| if (a + 1) % n == b { !seen.contains(&(b, a)) } else { seen.contains(&(b, a)) })
         && (0..n).all(|k| seen.contains(&(k, (k + 1) % n)))
-}
-
-/// Whether a chord is in both pieces' triangulations: that edge would bound four triangles, and
-/// the mesh would not be a 2-manifold.
-pub fn shared_chord(tri: &[Triangulation; 2]) -> bool {
-    let a = chord_keys(&tri[0]);
-    tri[1].chords().into_iter().any(|(i, j)| a.contains_key(&crate::order::pair_key(i, j)))
 }
 
 /// The chords of `t` keyed by [`crate::order::pair_key`] ([`metric::KeyMap`], the map type

@@ -46,7 +46,8 @@ const COPLANAR_TOL: f64 = 1e-9;
 /// 2-manifold) to the other diagonal of its flat quad, when that diagonal is not A's and has its
 /// flat length in 3D already (the quad is planar, as everywhere in the flat doubly covered
 /// D-form of two congruent pieces, where both ear clippings are the same): the shape is
-/// unchanged and stays isometric. Returns the number of flips.
+/// unchanged and stays isometric. Returns the number of flips. A shared chord it cannot flip
+/// is split when the mesh is written out ([`split_shared_chords`]).
 pub fn unshare_planar(pieces: &SeamPieces, x: &[V3], tri: &mut [Triangulation; 2]) -> usize {
     let mut flips = 0;
     let pts = &pieces.flat[1].pts;
@@ -71,6 +72,74 @@ pub fn unshare_planar(pieces: &SeamPieces, x: &[V3], tri: &mut [Triangulation; 2
         }
     }
     flips
+}
+
+/// Where along a shared chord `i → j` ([`split_shared_chords`]) the new vertex goes: not at the
+/// midpoint, which is a seam sample when the chord spans an even number of evenly spaced samples
+/// on a straight side (a convex 11-gon with its mirror image at offset 0, 128 seam vertices: a
+/// zero-length edge whose "strain" of 5.8e-2 was round-off), but at the golden section, which
+/// no such even spacing hits.
+const SPLIT_AT: f64 = 0.618_033_988_749_894_8;
+
+/// Splits each chord that both pieces' triangles have (an edge of four triangles: no
+/// 2-manifold) of an isometric answer in piece B: B's two triangles on it become four around a
+/// new vertex on the chord ([`SPLIT_AT`]), in 3D and on B's flat piece. A triangle is planar, so
+/// the split keeps every length and the shape. Such chords are where the two sheets lie on each
+/// other: the flat doubly covered D-form of two congruent polygons, whose triangulations are
+/// each other's mirror image (two 80 × 50 mm rectangles at 50 mm: every chord shared where
+/// flipping one is no help, its quad being degenerate on the straight sides).
+pub(crate) fn split_shared_chords(x: &mut Vec<V3>, triangles: &mut Vec<[usize; 3]>, flat: &mut Vec<[[f64; 2]; 3]>, piece: &mut Vec<u8>) {
+    let key = |i: usize, j: usize| (i.min(j), i.max(j));
+    // Each edge's triangles, per piece; B's kept up to date as its triangles are split.
+    let mut holders: std::collections::HashMap<(usize, usize), [Vec<usize>; 2]> = std::collections::HashMap::new();
+    for (t, tri) in triangles.iter().enumerate() {
+        for m in 0..3 {
+            holders.entry(key(tri[m], tri[(m + 1) % 3])).or_default()[piece[t] as usize].push(t);
+        }
+    }
+    let mut shared: Vec<(usize, usize)> = holders.iter().filter(|(_, h)| h[0].len() == 2 && h[1].len() == 2).map(|(&e, _)| e).collect();
+    shared.sort_unstable();
+    for (i, j) in shared {
+        let v = x.len();
+        x.push([0, 1, 2].map(|a| x[i][a] + SPLIT_AT * (x[j][a] - x[i][a])));
+        let on = holders.get(&(i, j)).map(|h| h[1].clone()).unwrap_or_default();
+        for t in on {
+            // Triangle (p, q, r) with the chord as p → q: (p, v, r) in its place, (v, q, r) new.
+            let (tri, f) = (triangles[t], flat[t]);
+            let Some(m) = (0..3).find(|&m| key(tri[m], tri[(m + 1) % 3]) == (i, j)) else { continue };
+            let (p, q, r) = (tri[m], tri[(m + 1) % 3], tri[(m + 2) % 3]);
+            // The same point of the chord i → j on the flat piece (p → q may run either way).
+            let (fi, fj) = if p == i { (f[m], f[(m + 1) % 3]) } else { (f[(m + 1) % 3], f[m]) };
+            let mid = [fi[0] + SPLIT_AT * (fj[0] - fi[0]), fi[1] + SPLIT_AT * (fj[1] - fi[1])];
+            let u = triangles.len();
+            let (mut first, mut second) = (tri, tri);
+            first[(m + 1) % 3] = v;
+            second[m] = v;
+            let (mut f1, mut f2) = (f, f);
+            f1[(m + 1) % 3] = mid;
+            f2[m] = mid;
+            triangles[t] = first;
+            flat[t] = f1;
+            triangles.push(second);
+            flat.push(f2);
+            piece.push(1);
+            let mut edit = |e: (usize, usize), add: Option<usize>, drop: Option<usize>| {
+                let list = &mut holders.entry(key(e.0, e.1)).or_default()[1];
+                if let Some(d) = drop {
+                    list.retain(|&w| w != d);
+                }
+                if let Some(a) = add {
+                    list.push(a);
+                }
+            };
+            edit((p, q), None, Some(t));
+            edit((q, r), Some(u), Some(t));
+            edit((p, v), Some(t), None);
+            edit((v, r), Some(t), None);
+            edit((v, q), Some(u), None);
+            edit((r, v), Some(u), None);
+        }
+    }
 }
 
 /// Largest distance from its plane, over its size, of a shape that [`flatten_near_planar`]

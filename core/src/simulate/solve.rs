@@ -27,13 +27,13 @@ pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solu
 
 /// Whether a mesh is what a sheet can be: a closed 2-manifold (each piece's triangles
 /// triangulate its polygon, [`triangulates_polygon`]; a chord in both pieces is split in B when
-/// the mesh is written out, [`super::stats::finish`]), no self-intersection
+/// the mesh is written out, [`super::mesh::split_shared_chords`]), no self-intersection
 /// ([`self_intersecting`]) and, when `folds` is set (a pair with a non-convex piece), no fold
-/// inside a piece (a bend above [`FOLD_BEND`], [`max_bend`]). A convex pair's answer has been checked convex, and a sharp chord of it is an
-/// edge of its Alexandrov polyhedron (a triangle with a square bends by 90–99° along the
-/// creases between corners), not a fold the sheet would not take; a non-convex pair's answer
-/// often is a fold: the kidney of issue 14 with a circle ended isometric to 2e-2 with chords
-/// bent by 175° through the other sheet.
+/// inside a piece (a bend above [`FOLD_BEND`], [`max_bend`]). A convex pair's answer has been
+/// checked convex, and a sharp chord of it is an edge of its Alexandrov polyhedron (a triangle
+/// with a square bends by 90–99° along the creases between corners), not a fold the sheet would
+/// not take; a non-convex pair's answer often is a fold: the kidney of issue 14 with a circle
+/// ended isometric to 2e-2 with chords bent by 175° through the other sheet.
 pub fn sound(x: &[V3], tri: &[Triangulation; 2], folds: bool) -> bool {
     tri.iter().all(triangulates_polygon) && !(folds && max_bend(x, tri) > FOLD_BEND) && !self_intersecting(x, tri)
 }

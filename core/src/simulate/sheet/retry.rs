@@ -128,9 +128,9 @@ pub fn attempt(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], path: P
 /// `first`, or when it is far off ([`far_off`]) the best ([`Attempt::grade`]) of it and the
 /// attempts at the weights of [`KB`], tried in order until one is sound ([`Attempt::sound`]),
 /// then while the best still crosses itself, strained by at most [`TOUCH_BELOW`], at
-/// [`CONTACT_KB`] with the contacts of [`TOUCH`],
-/// within `budget` steps in all. The answer's `steps` count every attempt's. One stage is
-/// reported per attempt tried, at the best answer's strain.
+/// [`CONTACT_KB`] with the contacts of [`TOUCH`], within `budget` steps in all. The answer's
+/// `steps` count every attempt's. One stage is reported per attempt tried, at the best answer's
+/// strain.
 pub fn others(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], first: Attempt, budget: usize, report: &mut Reporter) -> Attempt {
     if !far_off(&first) {
         return first;
