@@ -131,3 +131,41 @@ fn test_issue_14_an_offset_of_many_perimeters_is_the_gluing_of_its_remainder() {
         Err(e) => panic!("offset 1e17 mm: wanted a form, got the error {e}"),
     }
 }
+
+/// Anchors added on the straight sides of a convex polygon (Illustrator's "Add Anchor Points")
+/// change nothing of its D-form. Regression (second fuzz round, stop 40): the snap of each
+/// piece's frame moves such an anchor off its side by up to 2e-9 of the size, and round-off
+/// alone was the tolerance of "convex": a 21-gon with such anchors was solved with its copy as
+/// a non-convex pair, on the sheet path, to volumes 68,985–71,191 mm³ at offsets 1e-9 mm and a
+/// perimeter apart (its polyhedron has 61,507); and a trapezoid with such anchors, glued to its
+/// mirror image, got the error "too thin or too detailed for 64 seam vertices" at 4 of 80
+/// offsets, its ear clipping stuck on a sliver of nearly collinear samples.
+#[test]
+fn test_issue_14_anchors_added_on_straight_sides_change_nothing() {
+    // Points a share t along each side of a polygon, as an editor adds them.
+    let with_anchors = |pts: &[(f64, f64)], t: f64| -> Vec<(f64, f64)> {
+        (0..pts.len()).flat_map(|i| {
+            let (p, q) = (pts[i], pts[(i + 1) % pts.len()]);
+            [p, (p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1))]
+        }).collect()
+    };
+    let pentagon = [(0.0, 0.0), (61.3171, -3.9017), (70.4413, 33.7197), (21.9013, 57.4127), (-12.8871, 29.5019)];
+    let trapezoid = [(0.0, 0.0), (58.43973750018408, 0.0), (-13.042932309701715, 24.24577289297152), (-19.82180099291569, 24.24577289297152)];
+    for (name, pts, mirror, fracs) in [("pentagon", &pentagon[..], false, [0.1, 0.55, 0.83]), ("trapezoid", &trapezoid[..], true, [0.4, 0.55, 0.7])] {
+        let bare = shapes::polyline(pts);
+        let dense = shapes::polyline(&with_anchors(pts, 0.3819660112501051));
+        let p = shapes::perimeter(&bare);
+        for f in fracs {
+            let vol = |a: &Contour| {
+                let b = if mirror { shapes::mirrored(a) } else { a.clone() };
+                let s = simulate(a, &b, &SimulateOptions { offset: f * p, resolution: 64, ..Default::default() })
+                    .unwrap_or_else(|e| panic!("{name} at {f} perimeters: wanted a form, got the error {e}"));
+                assert_sound(&s, &format!("{name} at {f} perimeters"));
+                mesh_checks::volume(&s).abs()
+            };
+            let (want, got) = (vol(&bare), vol(&dense));
+            println!("{name} at {f} perimeters: {want:.3} mm³ bare, {got:.3} with anchors on its sides");
+            assert!((got - want).abs() <= 1e-6 * want, "{name} at {f} perimeters: wanted the bare polygon's volume {want:.3}, got {got:.3}");
+        }
+    }
+}

@@ -182,11 +182,15 @@ pub(crate) fn convex_as_a_whole(x: &[V3], tri: &[Triangulation; 2]) -> bool {
 pub(crate) const OUTSIDE_TOL: f64 = 1e-2;
 
 /// Whether the flat sample polygon `pts` (counter-clockwise) is convex: no vertex turns
-/// clockwise by more than round-off (a relative 1e-12 of its squared size).
+/// clockwise by more than [`metric::straight_margin`] (round-off, and the snap of the piece's
+/// frame off a straight side).
 pub fn is_convex_polygon(pts: &[[f64; 2]]) -> bool {
     let n = pts.len();
-    let eps = 1e-12 * metric::size2(pts);
-    (0..n).all(|k| metric::orient(pts[(k + n - 1) % n], pts[k], pts[(k + 1) % n]) >= -eps)
+    let s2 = metric::size2(pts);
+    (0..n).all(|k| {
+        let (a, c) = (pts[(k + n - 1) % n], pts[(k + 1) % n]);
+        metric::orient(a, pts[k], c) >= -metric::straight_margin(a, c, s2)
+    })
 }
 
 /// The bend across chord i–j of piece `p` (the angle between the two triangles' normals: 0 when

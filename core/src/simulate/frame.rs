@@ -25,6 +25,11 @@ use kurbo::Point;
 /// The grid cell as a power of two below the piece's size.
 pub const GRID_BITS: i32 = 30;
 
+/// Farthest the snap moves a point, relative to the piece's size: half a cell's diagonal, the
+/// cell being at most `2^(1.5 − GRID_BITS)` of the size (`ceil(log₂ size + ½)` exceeds
+/// `log₂ size` by at most 1.5), so `2^(1 − GRID_BITS)`, 1.9e-9.
+pub const SNAP_MOVE: f64 = 2.0 / (1u64 << GRID_BITS) as f64;
+
 /// Where a piece's frame sits in the input's coordinates.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Frame {

@@ -12,20 +12,22 @@
 //! back onto its seam edge, which is straight in both pieces and in space, at its own distance
 //! along it; the triangle on that edge becomes a fan, isometric as the triangle was.
 
-use super::super::metric::{orient, size2, Triangulation};
+use super::super::metric::{orient, size2, straight_margin, Triangulation};
 use super::super::seam::{FlatPiece, SeamPieces};
 use super::super::vec3::V3;
 use super::intrinsic::lerp2;
 use super::overlay::lerp3;
 
 /// The samples of `pieces` to keep: the first, and every one where either piece turns (its two
-/// neighbours not collinear with it to 1e-12 of the piece's size²).
+/// neighbours not collinear with it within [`straight_margin`]: an anchor added on a straight
+/// side is no vertex of the polyhedron).
 pub(crate) fn kept(pieces: &SeamPieces) -> Vec<usize> {
     let n = pieces.n;
-    let eps = pieces.flat.each_ref().map(|f| 1e-12 * size2(&f.pts));
+    let s2 = pieces.flat.each_ref().map(|f| size2(&f.pts));
     let straight = |k: usize| (0..2).all(|p| {
         let f = &pieces.flat[p].pts;
-        orient(f[(k + n - 1) % n], f[k], f[(k + 1) % n]).abs() <= eps[p]
+        let (a, c) = (f[(k + n - 1) % n], f[(k + 1) % n]);
+        orient(a, f[k], c).abs() <= straight_margin(a, c, s2[p])
     });
     (0..n).filter(|&k| k == 0 || !straight(k)).collect()
 }
