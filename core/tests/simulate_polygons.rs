@@ -231,3 +231,33 @@ fn test_issue_14_anchors_added_on_straight_sides_change_nothing() {
         }
     }
 }
+
+/// Regression (stop 41): a trapezoid glued to its mirror image ended stretched by 8–170 % at 9
+/// of 80 offsets, 5 of them around the one where it nearly folds flat, though the intrinsic
+/// path had embedded it. Its triangulation has two edges between one pair of cone points, so two
+/// triangles on the same three vertices; the seam paths were followed through the wrong one of
+/// them (`Mesh::triangles_along`), a flip gave a path a crossing it does not make, and the
+/// seam could not be cut along. Now all 80 converge (these 9 are checked). Uniqueness, independently of
+/// the solver: the mirror image is walked counter-clockwise from its first anchor, i.e. along
+/// the trapezoid's own outline backwards, so the trapezoid listed from its second corner, with
+/// its own mirror image, is the same gluing at the same offset: one volume.
+#[test]
+fn test_issue_14_trapezoid_with_its_mirror_image_converges_where_it_stretched() {
+    let t = [(0.0, 0.0), (58.43973750018408, 0.0), (-13.042932309701715, 24.24577289297152), (-19.82180099291569, 24.24577289297152)];
+    let a = shapes::polyline(&t);
+    let turned = shapes::polyline(&[t[1], t[2], t[3], t[0]]);
+    let p = shapes::perimeter(&a);
+    for k in [1, 4, 38, 39, 40, 41, 42, 76, 79] {
+        let o = p * k as f64 / 80.0;
+        let pair = [&a, &turned].map(|x| {
+            let s = run(x, &shapes::mirrored(x), o, 128);
+            let what = format!("trapezoid with its mirror image at {k}/80 of its perimeter");
+            assert_sound(&s, &what);
+            let out = outside(&s);
+            assert!(out <= 1e-6, "{what}: wanted a convex polyhedron, got a vertex {out:.2e} sizes outside a face");
+            mesh_checks::volume(&s).abs()
+        });
+        println!("trapezoid with its mirror image at {k}/80, listed from its first and second corners: volumes {:.4} and {:.4}", pair[0], pair[1]);
+        assert!((pair[0] - pair[1]).abs() <= 1e-6 * pair[0], "{k}/80: one gluing, wanted one volume, got {pair:?}");
+    }
+}

@@ -266,6 +266,42 @@ impl Mesh {
         [i, j].into_iter().find(|&s| self.seam_slot[s] == Some(e))
     }
 
+    /// The triangles the path of seam edge `s` → `s + 1` runs through, one per segment between
+    /// its consecutive points (the sample, each crossing in order, the next sample); `None` for
+    /// a path that crosses nothing, or whose crossings do not chain. Each crossing leads to the
+    /// other side of its edge; the first triangle is the side of the first edge that holds `s`
+    /// and from which the chain reaches `s + 1`. A triangulation with two edges between one pair
+    /// of vertices (different geodesics) can have two triangles on the same three vertices, a
+    /// "pillow", and telling triangles apart by their vertices then took the wrong one: a
+    /// segment from a crossing of a quad's side to a vertex of the quad was taken to run inside
+    /// the quad when it ran in the pillow's other triangle, the flip gave that path a crossing
+    /// of the new diagonal it does not make, and the seam could not be cut along. A trapezoid
+    /// glued to its mirror image near its flat gluing, and thin triangles glued to their
+    /// copies, ended stretched by 8–170 % that way, though their embedding had been found.
+    pub(crate) fn triangles_along(&self, s: usize) -> Option<Vec<usize>> {
+        let path = &self.paths[s];
+        let s1 = (s + 1) % self.n;
+        let first = path.first()?.e;
+        self.halves[first].into_iter().map(|h| h.0).filter(|&t0| self.tris[t0].contains(&s)).find_map(|t0| {
+            let mut chain = Vec::with_capacity(path.len() + 1);
+            chain.push(t0);
+            for (m, c) in path.iter().enumerate() {
+                let cur = chain[chain.len() - 1];
+                let [h0, h1] = self.halves[c.e];
+                let next = if h0.0 == cur { h1.0 } else if h1.0 == cur { h0.0 } else { return None };
+                let holds = match path.get(m + 1) {
+                    Some(d) => self.side[next].contains(&d.e),
+                    None => self.tris[next].contains(&s1),
+                };
+                if !holds {
+                    return None;
+                }
+                chain.push(next);
+            }
+            Some(chain)
+        })
+    }
+
     /// The quad of edge slot `e`: (t1, a1) with side i → j, (t2, a2) with side j → i, and the
     /// vertices i, j, k (opposite in t1), l (opposite in t2).
     fn quad(&self, e: usize) -> ((usize, usize), (usize, usize), [usize; 4]) {
@@ -320,18 +356,15 @@ impl Mesh {
         // Each path's stretch through the quad (from where it enters to where it leaves, across
         // e or inside one of the two triangles) is one straight segment in the layout: it now
         // crosses k–l there or nothing.
-        let closure = |p: PathPoint, t: [usize; 3], s: [usize; 3]| match p {
-            PathPoint::Vertex(v) => t.contains(&v),
-            PathPoint::On(c) => s.contains(&c.e),
-        };
         let on_diagonal = |p: PathPoint| matches!(p, PathPoint::On(c) if c.e == e);
-        let (tri1, tri2) = ([i, j, k], [j, i, l]);
-        let inside = |a: PathPoint, b: PathPoint| (closure(a, tri1, s1) && closure(b, tri1, s1)) || (closure(a, tri2, s2) && closure(b, tri2, s2));
         let mut rewritten: Vec<(usize, Vec<Crossing>)> = Vec::new();
         for (s, path) in self.paths.iter().enumerate() {
             if path.is_empty() {
                 continue;
             }
+            // Segment m runs inside the quad when its triangle is t1 or t2.
+            let Some(through) = self.triangles_along(s) else { return false };
+            let inside = |m: usize| through[m] == t1 || through[m] == t2;
             let mut pts: Vec<PathPoint> = Vec::with_capacity(path.len() + 2);
             pts.push(PathPoint::Vertex(s));
             pts.extend(path.iter().map(|&c| PathPoint::On(c)));
@@ -340,7 +373,7 @@ impl Mesh {
             let mut changed = false;
             let mut m = 0;
             while m + 1 < pts.len() {
-                if on_diagonal(pts[m]) || !inside(pts[m], pts[m + 1]) {
+                if on_diagonal(pts[m]) || !inside(m) {
                     out.push(pts[m + 1]);
                     m += 1;
                     continue;
@@ -348,7 +381,7 @@ impl Mesh {
                 let mut b = m + 1;
                 if on_diagonal(pts[b]) {
                     b += 1;
-                    if b >= pts.len() || !inside(pts[b - 1], pts[b]) {
+                    if b >= pts.len() || !inside(b - 1) {
                         return false;
                     }
                 }

@@ -51,10 +51,6 @@ struct Part {
     piece: Option<usize>,
 }
 
-/// A point of a seam path as [`cut`] walks it: the mesh vertex it is (`Some(v)`) or the edge slot
-/// it crosses (`Some(e)`), and its index among the new seam points.
-type PathStop = (Option<usize>, Option<usize>, usize);
-
 /// Whether `a` → `b` is an edge of `cycle` in that direction.
 fn has_edge(cycle: &[usize], a: usize, b: usize) -> bool {
     let k = cycle.len();
@@ -126,25 +122,24 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
             vec![Part { cycle, piece: None }]
         })
         .collect();
-    // The path segments, each cut into the triangle that holds both its ends: A lies to its left.
+    // The path segments, each cut into the triangle it runs through ([`Mesh::triangles_along`]): A lies
+    // to its left. A path's points by their new indices: its sample, its crossings, the next sample.
     for (s, (path, indices)) in mesh.paths.iter().zip(&crossing_index).enumerate() {
         if path.is_empty() {
             continue;
         }
         let s1 = (s + 1) % n;
-        let mut points: Vec<PathStop> = vec![(Some(s), None, new(s))];
-        for (c, &idx) in path.iter().zip(indices) {
-            points.push((None, Some(c.e), idx));
-        }
-        points.push((Some(s1), None, new(s1)));
-        for w in points.windows(2) {
+        let mut points = vec![new(s)];
+        points.extend(indices);
+        points.push(new(s1));
+        let through = mesh.triangles_along(s)?;
+        for (w, &ti) in points.windows(2).zip(&through) {
             let (p, q) = (w[0], w[1]);
-            let ti = triangle_of(mesh, p.0, p.1, q.0, q.1)?;
             let list = &mut parts[ti];
-            let pi = list.iter().position(|part| part.cycle.contains(&p.2) && part.cycle.contains(&q.2))?;
+            let pi = list.iter().position(|part| part.cycle.contains(&p) && part.cycle.contains(&q))?;
             let part = list.swap_remove(pi);
             let k = part.cycle.len();
-            let (a, b) = (part.cycle.iter().position(|&v| v == p.2)?, part.cycle.iter().position(|&v| v == q.2)?);
+            let (a, b) = (part.cycle.iter().position(|&v| v == p)?, part.cycle.iter().position(|&v| v == q)?);
             if (a + 1) % k == b || (b + 1) % k == a {
                 return None;
             }
@@ -224,12 +219,4 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
     let (b, a) = (flat.pop()?, flat.pop()?);
     let (tb, ta) = (tri.pop()?, tri.pop()?);
     Some((SeamPieces { n: nm, flat: [a, b] }, xs, [ta, tb]))
-}
-
-/// The triangle of `mesh` that holds two consecutive points of a seam path, each a vertex
-/// (`Some(v)`) or a crossing of an edge slot (`Some(e)`).
-fn triangle_of(mesh: &Mesh, pv: Option<usize>, pe: Option<usize>, qv: Option<usize>, qe: Option<usize>) -> Option<usize> {
-    let holds = |ti: usize, v: Option<usize>, e: Option<usize>| v.is_none_or(|v| mesh.tris[ti].contains(&v)) && e.is_none_or(|e| mesh.side[ti].contains(&e));
-    let edge = pe.or(qe)?;
-    mesh.halves(edge).into_iter().map(|h| h.0).find(|&ti| holds(ti, pv, pe) && holds(ti, qv, qe))
 }
