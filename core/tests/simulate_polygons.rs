@@ -153,6 +153,15 @@ fn outside(s: &Simulation) -> f64 {
     worst
 }
 
+/// The volume of a converged answer that is sound ([`assert_sound`]) and a convex polyhedron
+/// ([`outside`] within 1e-6 of its size).
+fn polyhedron_volume(s: &Simulation, what: &str) -> f64 {
+    assert_sound(s, what);
+    let out = outside(s);
+    assert!(out <= 1e-6, "{what}: wanted a convex polyhedron, got a vertex {out:.2e} sizes outside a face");
+    mesh_checks::volume(s).abs()
+}
+
 /// Regression (second fuzz round, stop 40): about 70 % of random triangles glued to their copy,
 /// mirror image or a rotated copy did not converge (mostly stretched by 3–900 %), though two
 /// convex polygons always make Alexandrov's polyhedron. The intrinsic path that holds creases
@@ -178,14 +187,7 @@ fn test_issue_14_triangles_with_their_copies_are_convex_polyhedra() {
         let (p, c) = (shapes::perimeter(&a), t[1].0 - t[0].0);
         for frac in [0.2743, 0.6407] {
             let o = frac * p;
-            let pair = [(&a, o), (&turned, (o + 2.0 * c).rem_euclid(p))].map(|(x, o)| {
-                let s = run(x, x, o, 128);
-                let what = format!("triangle {k} with its copy at {o:.3} mm");
-                assert_sound(&s, &what);
-                let out = outside(&s);
-                assert!(out <= 1e-6, "{what}: wanted a convex polyhedron, got a vertex {out:.2e} sizes outside a face");
-                mesh_checks::volume(&s).abs()
-            });
+            let pair = [(&a, o), (&turned, (o + 2.0 * c).rem_euclid(p))].map(|(x, o)| polyhedron_volume(&run(x, x, o, 128), &format!("triangle {k} with its copy at {o:.3} mm")));
             println!("triangle {k} with its copy at {frac} perimeters, and listed from its second corner: volumes {:.4} and {:.4}", pair[0], pair[1]);
             assert!((pair[0] - pair[1]).abs() <= 1e-6 * pair[0], "triangle {k} at {frac} perimeters: one gluing, wanted one volume, got {pair:?}");
         }
@@ -249,14 +251,7 @@ fn test_issue_14_trapezoid_with_its_mirror_image_converges_where_it_stretched() 
     let p = shapes::perimeter(&a);
     for k in [1, 4, 38, 39, 40, 41, 42, 76, 79] {
         let o = p * k as f64 / 80.0;
-        let pair = [&a, &turned].map(|x| {
-            let s = run(x, &shapes::mirrored(x), o, 128);
-            let what = format!("trapezoid with its mirror image at {k}/80 of its perimeter");
-            assert_sound(&s, &what);
-            let out = outside(&s);
-            assert!(out <= 1e-6, "{what}: wanted a convex polyhedron, got a vertex {out:.2e} sizes outside a face");
-            mesh_checks::volume(&s).abs()
-        });
+        let pair = [&a, &turned].map(|x| polyhedron_volume(&run(x, &shapes::mirrored(x), o, 128), &format!("trapezoid with its mirror image at {k}/80 of its perimeter")));
         println!("trapezoid with its mirror image at {k}/80, listed from its first and second corners: volumes {:.4} and {:.4}", pair[0], pair[1]);
         assert!((pair[0] - pair[1]).abs() <= 1e-6 * pair[0], "{k}/80: one gluing, wanted one volume, got {pair:?}");
     }
