@@ -133,8 +133,9 @@ fn test_issue_14_an_offset_of_many_perimeters_is_the_gluing_of_its_remainder() {
 }
 
 /// How far any vertex stands outside the plane of a face, relative to the mesh's size: zero
-/// (to round-off) for a convex polyhedron, whatever its triangulation. Faces of less than 1e-9
-/// of the size² are skipped: their planes are round-off.
+/// (to round-off) for a convex polyhedron, whatever its triangulation. Needles, faces whose
+/// least height is below 1e-3 of the size, are skipped: a sliver between two samples 15 µm
+/// apart and a far vertex is tilted by round-off and by the difference of the pieces' chords.
 fn outside(s: &Simulation) -> f64 {
     use mesh_checks::{cross, dot, norm, sub};
     let sign = mesh_checks::volume(s).signum();
@@ -143,7 +144,8 @@ fn outside(s: &Simulation) -> f64 {
     for t in &s.triangles {
         let nrm = cross(sub(s.vertices[t[1]], s.vertices[t[0]]), sub(s.vertices[t[2]], s.vertices[t[0]]));
         let area2 = norm(nrm);
-        if area2 <= 1e-9 * size * size {
+        let longest = (0..3).map(|m| norm(sub(s.vertices[t[m]], s.vertices[t[(m + 1) % 3]]))).fold(0.0, f64::max);
+        if area2 <= 1e-3 * size * longest {
             continue;
         }
         for v in &s.vertices {
@@ -153,12 +155,19 @@ fn outside(s: &Simulation) -> f64 {
     worst
 }
 
-/// The volume of a converged answer that is sound ([`assert_sound`]) and a convex polyhedron
-/// ([`outside`] within 1e-6 of its size).
+/// The volume of a converged answer of two polygons that is sound ([`assert_sound`]) and a
+/// convex polyhedron ([`outside`] within 1e-6 of its size).
 fn polyhedron_volume(s: &Simulation, what: &str) -> f64 {
+    convex_volume(s, what, 1e-6)
+}
+
+/// [`polyhedron_volume`] with `tol` for [`outside`]: a curved seam's chord mesh is convex only
+/// up to what its samples leave, and where creases cross a curved seam the chord meshes' length
+/// equations dent it by up to the seam floor (the solver accepts 2e-3 of the size there).
+fn convex_volume(s: &Simulation, what: &str, tol: f64) -> f64 {
     assert_sound(s, what);
     let out = outside(s);
-    assert!(out <= 1e-6, "{what}: wanted a convex polyhedron, got a vertex {out:.2e} sizes outside a face");
+    assert!(out <= tol, "{what}: wanted a convex form to {tol:e} of its size, got a vertex {out:.2e} sizes outside a face");
     mesh_checks::volume(s).abs()
 }
 
@@ -255,4 +264,24 @@ fn test_issue_14_trapezoid_with_its_mirror_image_converges_where_it_stretched() 
         println!("trapezoid with its mirror image at {k}/80, listed from its first and second corners: volumes {:.4} and {:.4}", pair[0], pair[1]);
         assert!((pair[0] - pair[1]).abs() <= 1e-6 * pair[0], "{k}/80: one gluing, wanted one volume, got {pair:?}");
     }
+}
+
+/// Regression (stop 41): a convex 9-gon glued to a circle, and a 9-gon with 0.6 mm rounded
+/// corners glued to its mirror image, ended stretched by 0.8 % and 32 %, though their
+/// embedding had been found. Beside a corner the graded seam puts samples 15 µm apart, and the
+/// embedding joined three of them on a straight side in a triangle of no area in that piece
+/// (the circle's chords there being shorter); such a triangle cannot be cut into triangles of
+/// area, so the mesh was refused. It is now merged into the polygon across its long side
+/// (`overlay::merge_slivers`). At 256 seam vertices, the default.
+#[test]
+fn test_issue_14_a_sliver_of_three_samples_on_a_straight_side_is_cut_along() {
+    let nine = [(35.79069732410298, 3.152076075009988), (35.78252272081321, 3.27272630159729), (28.019115976630705, 25.825159707492347), (13.076602895384534, 38.47728332525684), (-35.883286466187506, -1.0693411507597337), (-30.506657968947408, -21.77288226458877), (-15.762700355213727, -37.119680128470485), (11.471390043171116, -39.14980455290276), (18.293357609978607, -35.548396025877196)];
+    let a = shapes::polyline(&nine);
+    let s = run(&a, &shapes::circle_for(&a), 123.516721384998, 256);
+    let v = convex_volume(&s, "9-gon with a circle", 1e-3);
+    println!("9-gon with a circle: {v:.3} mm³, a vertex {:.2e} sizes outside a face", outside(&s));
+    let rounded = shapes::rounded_polygon(&[(61.868345873884145, 5.273082416249126), (3.989086647571545, 26.33832627633997), (-22.266860213456205, 24.695563368202063), (-35.357754332194055, 21.865216390640096), (-40.221985336942936, 20.343622489048347), (-62.386731784975375, -4.068522459285543), (-53.319876129460845, -14.135962449123912), (38.3720246514326, -20.958602611363407), (62.84377378301887, -2.560088531730293)], 0.62636006788638);
+    let s = run(&rounded, &shapes::mirrored(&rounded), 11.917975587498974, 256);
+    let v = convex_volume(&s, "rounded 9-gon with its mirror image", 1e-3);
+    println!("rounded 9-gon with its mirror image: {v:.3} mm³, a vertex {:.2e} sizes outside a face", outside(&s));
 }

@@ -44,6 +44,75 @@ fn triangulate_convex(poly: &[usize], pts: &[[f64; 2]], eps: f64) -> Option<Vec<
     Some(out)
 }
 
+/// The polygons `cycles` of one piece (counter-clockwise in its flat coordinates `pts`) with
+/// each one of no area (every turn within `eps`, the doubled area: points on one line) merged
+/// into a neighbour that shares its boundary: the neighbour's stretch along that line, from
+/// one end of the sliver to the other, then runs through all of the sliver's points in order,
+/// straight vertices that [`triangulate_convex`] cuts off with triangles of area. Such a sliver
+/// is three seam samples on a straight stretch of this piece (with any crossings on its sides)
+/// that the embedding joined in a triangle, the other piece's chords there being shorter (a
+/// 9-gon glued to a circle: samples 15 µm apart beside a corner, refused as a mesh that could
+/// not be cut along). Merging it is the flip of its long side, done on the flat piece, where its
+/// zero area is plain.
+fn merge_slivers(mut cycles: Vec<Vec<usize>>, pts: &[[f64; 2]], eps: f64) -> Vec<Vec<usize>> {
+    let flat = |c: &[usize]| {
+        let k = c.len();
+        (0..k).all(|m| orient(pts[c[(m + k - 1) % k]], pts[c[m]], pts[c[(m + 1) % k]]).abs() <= eps)
+    };
+    let mut c = 0;
+    while c < cycles.len() {
+        if !flat(&cycles[c]) {
+            c += 1;
+            continue;
+        }
+        let sliver = cycles[c].clone();
+        // Along the line: from the first point towards the farthest.
+        let far = sliver.iter().copied().max_by(|&u, &v| {
+            let d = |w: usize| (pts[w][0] - pts[sliver[0]][0]).hypot(pts[w][1] - pts[sliver[0]][1]);
+            d(u).total_cmp(&d(v))
+        });
+        let Some(far) = far else { c += 1; continue };
+        let dir = [pts[far][0] - pts[sliver[0]][0], pts[far][1] - pts[sliver[0]][1]];
+        let along = |w: usize| (pts[w][0] - pts[sliver[0]][0]) * dir[0] + (pts[w][1] - pts[sliver[0]][1]) * dir[1];
+        let host = (0..cycles.len()).filter(|&h| h != c).find_map(|h| {
+            let g = &cycles[h];
+            let k = g.len();
+            // A run of the host's points that are all the sliver's, from an edge the two share.
+            let start = (0..k).find(|&i| sliver.contains(&g[i]) && !sliver.contains(&g[(i + k - 1) % k]))?;
+            let mut end = start;
+            while sliver.contains(&g[(end + 1) % k]) && (end + 1) % k != start {
+                end = (end + 1) % k;
+            }
+            (end != start).then_some((h, start, end))
+        });
+        let Some((h, start, end)) = host else {
+            c += 1;
+            continue;
+        };
+        let g = &cycles[h];
+        let k = g.len();
+        let (from, to) = (g[start], g[end]);
+        let (lo, hi) = (along(from).min(along(to)), along(from).max(along(to)));
+        // The run must span the sliver: its ends are the sliver's ends on the line.
+        if sliver.iter().any(|&w| along(w) < lo - eps || along(w) > hi + eps) {
+            c += 1;
+            continue;
+        }
+        let mut run: Vec<usize> = sliver.clone();
+        run.sort_by(|&u, &v| along(u).total_cmp(&along(v)));
+        if along(from) > along(to) {
+            run.reverse();
+        }
+        let rest: Vec<usize> = (1..k - ((end + k - start) % k)).map(|m| g[(end + m) % k]).collect();
+        let mut merged = run;
+        merged.extend(rest);
+        cycles[h] = merged;
+        cycles.swap_remove(c);
+        c = 0;
+    }
+    cycles
+}
+
 /// A polygon of a cut triangle: its vertices (new indices, counter-clockwise seen from
 /// outside) and the piece it lies in, once known.
 struct Part {
@@ -203,9 +272,9 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
     for (p, q) in pts.iter().enumerate() {
         let eps = 1e-12 * metric::size2(q);
         let mut tris = Vec::with_capacity(nm - 2);
-        for part in parts.iter().flatten().filter(|part| part.piece == Some(p)) {
-            // B's flat piece is mirrored: its counter-clockwise order is the reverse of outward.
-            let cycle: Vec<usize> = if p == 0 { part.cycle.clone() } else { part.cycle.iter().rev().copied().collect() };
+        // B's flat piece is mirrored: its counter-clockwise order is the reverse of outward.
+        let cycles = parts.iter().flatten().filter(|part| part.piece == Some(p)).map(|part| if p == 0 { part.cycle.clone() } else { part.cycle.iter().rev().copied().collect() }).collect();
+        for cycle in merge_slivers(cycles, q, eps) {
             tris.extend(triangulate_convex(&cycle, q, eps)?);
         }
         let area: f64 = tris.iter().map(|&[a, b, c]| orient(q[a], q[b], q[c])).sum();
