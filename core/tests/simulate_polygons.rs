@@ -285,3 +285,17 @@ fn test_issue_14_a_sliver_of_three_samples_on_a_straight_side_is_cut_along() {
     let v = convex_volume(&s, "rounded 9-gon with its mirror image", 1e-3);
     println!("rounded 9-gon with its mirror image: {v:.3} mm³, a vertex {:.2e} sizes outside a face", outside(&s));
 }
+
+/// Regression (stop 41): a convex 7-gon glued to a circle ended 10 % stretched. Beside one of
+/// its sharp corners the glued metric's curvature is −1.3e-2 (the seam edges take the mean of
+/// the two pieces' chords), and the embedding, which starts where every vertex's curvature is
+/// at least −1e-2, found no start at any radius (`alexandrov::embed`). Now it converges, and
+/// at 128 seam vertices to a volume within 1 % of 256's (issue 14's resolution independence).
+#[test]
+fn test_issue_14_a_polygon_corner_with_a_saddle_of_the_mean_lengths_finds_a_start() {
+    let a = shapes::polyline(&[(46.96959366562024, 18.554625435944278), (-27.599538669475205, 27.741130545836196), (-48.67280899925067, 17.21364111427609), (-28.784812473850376, -27.384163676502006), (-12.216345169560046, -30.820698480101626), (-11.856007309634895, -30.862104728601647), (58.08854660440088, -0.5694279054206208)]);
+    let b = shapes::circle_for(&a);
+    let [v128, v256] = [128, 256].map(|n| convex_volume(&run(&a, &b, 158.64787311597956, n), &format!("7-gon with a circle at {n}"), 1e-3));
+    println!("7-gon with a circle: {v128:.3} mm³ at 128 seam vertices, {v256:.3} at 256");
+    assert!((v128 - v256).abs() <= 1e-2 * v256, "wanted the volumes at 128 and 256 within 1 %, got {v128:.3} and {v256:.3}");
+}
