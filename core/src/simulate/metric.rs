@@ -62,7 +62,8 @@ const AREA_EPS: f64 = 1e-12;
 /// Points" leaves one) is moved off the line by up to that, and round-off alone was then the
 /// tolerance: a convex 21-gon with such anchors counted as non-convex (its sampled sides bent
 /// inward by 7e-8 mm) and went the sheet path: with its copy, volumes 3 % apart at offsets
-/// 1e-9 mm apart, all 12–16 % above its polyhedron's (61,507 mm³, now at each of them); a trapezoid with such anchors could not be ear-clipped at 4 of 80 offsets.
+/// 1e-9 mm apart, all 12–16 % above its polyhedron's (61,507 mm³, now at each of them); a
+/// trapezoid with such anchors could not be ear-clipped at 4 of 80 offsets.
 pub const STRAIGHT: f64 = 4.0 * super::frame::SNAP_MOVE;
 
 /// The margin within which `orient(a, b, c)` counts as zero for a vertex `b` between `a` and

@@ -71,7 +71,10 @@ fn merge_slivers(mut cycles: Vec<Vec<usize>>, pts: &[[f64; 2]], eps: f64) -> Vec
             let d = |w: usize| (pts[w][0] - pts[sliver[0]][0]).hypot(pts[w][1] - pts[sliver[0]][1]);
             d(u).total_cmp(&d(v))
         });
-        let Some(far) = far else { c += 1; continue };
+        let Some(far) = far else {
+            c += 1;
+            continue;
+        };
         let dir = [pts[far][0] - pts[sliver[0]][0], pts[far][1] - pts[sliver[0]][1]];
         let along = |w: usize| (pts[w][0] - pts[sliver[0]][0]) * dir[0] + (pts[w][1] - pts[sliver[0]][1]) * dir[1];
         let host = (0..cycles.len()).filter(|&h| h != c).find_map(|h| {
@@ -191,8 +194,9 @@ pub(crate) fn cut(mesh: &Mesh, pieces: &SeamPieces, x: &[V3]) -> Option<(SeamPie
             vec![Part { cycle, piece: None }]
         })
         .collect();
-    // The path segments, each cut into the triangle it runs through ([`Mesh::triangles_along`]): A lies
-    // to its left. A path's points by their new indices: its sample, its crossings, the next sample.
+    // The path segments, each cut into the triangle it runs through
+    // ([`Mesh::triangles_along`]): A lies to its left. A path's points by their new indices: its
+    // sample, its crossings, the next sample.
     for (s, (path, indices)) in mesh.paths.iter().zip(&crossing_index).enumerate() {
         if path.is_empty() {
             continue;
