@@ -72,7 +72,7 @@ pub fn sort_dedup_pairs(v: &mut Vec<(usize, usize)>) {
 }
 
 /// The pair `(i, j)` of a [`pair_key`].
-fn unpair(k: u64) -> (usize, usize) {
+pub fn unpair(k: u64) -> (usize, usize) {
     ((k >> 32) as usize, (k & LOW) as usize)
 }
 

@@ -317,17 +317,21 @@ pub fn triangulates_polygon(t: &Triangulation) -> bool {
     if n < 3 || t.tris.len() != n - 2 {
         return false;
     }
-    let mut seen: std::collections::HashSet<(usize, usize)> = std::collections::HashSet::with_capacity(3 * t.tris.len());
+    // Directed edges keyed by [`crate::order::pair_key`] in a [`metric::KeyMap`] (see
+    // [`chord_keys`]).
+    let key = crate::order::pair_key;
+    let mut seen = metric::KeyMap::default();
     for tri in &t.tris {
         for m in 0..3 {
             let (a, b) = (tri[m], tri[(m + 1) % 3]);
-            if a >= n || b >= n || a == b || !seen.insert((a, b)) {
+            if a >= n || b >= n || a == b || seen.insert(key(a, b), 0).is_some() {
                 return false;
             }
         }
     }
-    seen.iter().all(|&(a, b)| if (a + 1) % n == b { !seen.contains(&(b, a)) } else { seen.contains(&(b, a)) })
-        && (0..n).all(|k| seen.contains(&(k, (k + 1) % n)))
+    let has = |a: usize, b: usize| seen.contains_key(&key(a, b));
+    t.tris.iter().flat_map(|tri| (0..3).map(move |m| (tri[m], tri[(m + 1) % 3]))).all(|(a, b)| has(b, a) != ((a + 1) % n == b))
+        && (0..n).all(|k| has(k, (k + 1) % n))
 }
 
 /// The chords of `t` keyed by [`crate::order::pair_key`] ([`metric::KeyMap`], the map type

@@ -3,7 +3,7 @@
 //! in the flat piece), B's reversed.
 
 use super::isometry::{bars, max_strain};
-use super::metric::Triangulation;
+use super::metric::{KeyMap, Triangulation};
 use super::seam::SeamPieces;
 use super::vec3::{centroid, cross, dot, norm, sub, V3};
 
@@ -89,24 +89,34 @@ const SPLIT_AT: f64 = 0.618_033_988_749_894_8;
 /// each other's mirror image (two 80 × 50 mm rectangles at 50 mm: every chord shared where
 /// flipping one is no help, its quad being degenerate on the straight sides).
 pub(crate) fn split_shared_chords(x: &mut Vec<V3>, triangles: &mut Vec<[usize; 3]>, flat: &mut Vec<[[f64; 2]; 3]>, piece: &mut Vec<u8>) {
-    let key = |i: usize, j: usize| (i.min(j), i.max(j));
-    // Each edge's triangles, per piece; B's kept up to date as its triangles are split.
-    let mut holders: std::collections::HashMap<(usize, usize), [Vec<usize>; 2]> = std::collections::HashMap::new();
+    // Keyed by [`crate::order::pair_key`] in [`KeyMap`]s, the triangulations' map type: each
+    // undirected edge's number of triangles per piece, and the triangle that holds each directed
+    // edge of B (one per directed edge in a piece), kept up to date as B's triangles are split.
+    let key = crate::order::pair_key;
+    let undirected = |a: usize, b: usize| key(a.min(b), a.max(b));
+    let mut count = [KeyMap::default(), KeyMap::default()];
+    let mut owner = KeyMap::default();
     for (t, tri) in triangles.iter().enumerate() {
         for m in 0..3 {
-            holders.entry(key(tri[m], tri[(m + 1) % 3])).or_default()[piece[t] as usize].push(t);
+            let (a, b) = (tri[m], tri[(m + 1) % 3]);
+            *count[piece[t] as usize].entry(undirected(a, b)).or_insert(0) += 1;
+            if piece[t] == 1 {
+                owner.insert(key(a, b), t);
+            }
         }
     }
-    let mut shared: Vec<(usize, usize)> = holders.iter().filter(|(_, h)| h[0].len() == 2 && h[1].len() == 2).map(|(&e, _)| e).collect();
+    let mut shared: Vec<u64> = count[0].iter().filter(|&(k, &c)| c == 2 && count[1].get(k) == Some(&2)).map(|(&k, _)| k).collect();
     shared.sort_unstable();
-    for (i, j) in shared {
+    for k in shared {
+        let (i, j) = crate::order::unpair(k);
         let v = x.len();
         x.push([0, 1, 2].map(|a| x[i][a] + SPLIT_AT * (x[j][a] - x[i][a])));
-        let on = holders.get(&(i, j)).map(|h| h[1].clone()).unwrap_or_default();
+        let mut on: Vec<usize> = [key(i, j), key(j, i)].iter().filter_map(|e| owner.get(e).copied()).collect();
+        on.sort_unstable();
         for t in on {
             // Triangle (p, q, r) with the chord as p → q: (p, v, r) in its place, (v, q, r) new.
             let (tri, f) = (triangles[t], flat[t]);
-            let Some(m) = (0..3).find(|&m| key(tri[m], tri[(m + 1) % 3]) == (i, j)) else { continue };
+            let Some(m) = (0..3).find(|&m| undirected(tri[m], tri[(m + 1) % 3]) == k) else { continue };
             let (p, q, r) = (tri[m], tri[(m + 1) % 3], tri[(m + 2) % 3]);
             // The same point of the chord i → j on the flat piece (p → q may run either way).
             let (fi, fj) = if p == i { (f[m], f[(m + 1) % 3]) } else { (f[(m + 1) % 3], f[m]) };
@@ -123,21 +133,10 @@ pub(crate) fn split_shared_chords(x: &mut Vec<V3>, triangles: &mut Vec<[usize; 3
             triangles.push(second);
             flat.push(f2);
             piece.push(1);
-            let mut edit = |e: (usize, usize), add: Option<usize>, drop: Option<usize>| {
-                let list = &mut holders.entry(key(e.0, e.1)).or_default()[1];
-                if let Some(d) = drop {
-                    list.retain(|&w| w != d);
-                }
-                if let Some(a) = add {
-                    list.push(a);
-                }
-            };
-            edit((p, q), None, Some(t));
-            edit((q, r), Some(u), Some(t));
-            edit((p, v), Some(t), None);
-            edit((v, r), Some(t), None);
-            edit((v, q), Some(u), None);
-            edit((r, v), Some(u), None);
+            owner.remove(&key(p, q));
+            for (a, b, holder) in [(p, v, t), (v, r, t), (v, q, u), (q, r, u), (r, v, u)] {
+                owner.insert(key(a, b), holder);
+            }
         }
     }
 }

@@ -154,7 +154,7 @@ impl FlatMesh {
             }
         }
         directed.keys().all(|&key| {
-            let (a, b) = ((key >> 32) as usize, (key & 0xffff_ffff) as usize);
+            let (a, b) = crate::order::unpair(key);
             let seam_forward = a < n && b < n && (a + 1) % n == b;
             seam_forward != directed.contains_key(&pair_key(b, a))
         }) && (0..n).all(|k| directed.contains_key(&pair_key(k, (k + 1) % n)))
