@@ -59,8 +59,8 @@ fn test_issue_14_sharp_rectangles_near_their_flat_gluing_converge_as_mirror_imag
 
 /// At their flat gluing the two rectangles' triangulations are each other's mirror image, so
 /// both pieces had the same chords: edges of four triangles, which the solve called unsettled
-/// though every edge kept its length to 1e-15. Such a chord is now split in B at its midpoint
-/// (`stats::finish`): the flat doubly covered rectangle, closed, with volume 0.
+/// though every edge kept its length to 1e-15. Such a chord is now split in B
+/// (`mesh::split_shared_chords`): the flat doubly covered rectangle, closed, with volume 0.
 #[test]
 fn test_issue_14_the_flat_gluing_of_two_rectangles_is_a_closed_doubly_covered_sheet() {
     let rect = shapes::polyline(&[(0.0, 0.0), (80.0, 0.0), (80.0, 50.0), (0.0, 50.0)]);
@@ -132,27 +132,13 @@ fn test_issue_14_an_offset_of_many_perimeters_is_the_gluing_of_its_remainder() {
     }
 }
 
-/// How far any vertex stands outside the plane of a face, relative to the mesh's size: zero
-/// (to round-off) for a convex polyhedron, whatever its triangulation. Needles, faces whose
-/// least height is below 1e-3 of the size, are skipped: a sliver between two samples 15 µm
-/// apart and a far vertex is tilted by round-off and by the difference of the pieces' chords.
+/// How far any vertex stands above the plane of a face, relative to the mesh's diameter
+/// ([`mesh_checks::outside_faces`]); needles, faces whose least height is below 1e-3 of it,
+/// are skipped.
 fn outside(s: &Simulation) -> f64 {
-    use mesh_checks::{cross, dot, norm, sub};
-    let sign = mesh_checks::volume(s).signum();
+    use mesh_checks::{norm, sub};
     let size = s.vertices.iter().flat_map(|p| s.vertices.iter().map(move |q| norm(sub(*p, *q)))).fold(0.0, f64::max);
-    let mut worst: f64 = 0.0;
-    for t in &s.triangles {
-        let nrm = cross(sub(s.vertices[t[1]], s.vertices[t[0]]), sub(s.vertices[t[2]], s.vertices[t[0]]));
-        let area2 = norm(nrm);
-        let longest = (0..3).map(|m| norm(sub(s.vertices[t[m]], s.vertices[t[(m + 1) % 3]]))).fold(0.0, f64::max);
-        if area2 <= 1e-3 * size * longest {
-            continue;
-        }
-        for v in &s.vertices {
-            worst = worst.max(sign * dot(nrm, sub(*v, s.vertices[t[0]])) / area2 / size);
-        }
-    }
-    worst
+    mesh_checks::outside_faces(s, size, 1e-3)
 }
 
 /// The volume of a converged answer of two polygons that is sound ([`assert_sound`]) and a
@@ -248,10 +234,10 @@ fn test_issue_14_anchors_added_on_straight_sides_change_nothing() {
 /// path had embedded it. Its triangulation has two edges between one pair of cone points, so two
 /// triangles on the same three vertices; the seam paths were followed through the wrong one of
 /// them (`Mesh::triangles_along`), a flip gave a path a crossing it does not make, and the
-/// seam could not be cut along. Now all 80 converge (these 9 are checked). Uniqueness, independently of
-/// the solver: the mirror image is walked counter-clockwise from its first anchor, i.e. along
-/// the trapezoid's own outline backwards, so the trapezoid listed from its second corner, with
-/// its own mirror image, is the same gluing at the same offset: one volume.
+/// seam could not be cut along. Now all 80 converge (these 9 are checked). Uniqueness,
+/// independently of the solver: the mirror image is walked counter-clockwise from its first
+/// anchor, i.e. along the trapezoid's own outline backwards, so the trapezoid listed from its
+/// second corner, with its own mirror image, is the same gluing at the same offset: one volume.
 #[test]
 fn test_issue_14_trapezoid_with_its_mirror_image_converges_where_it_stretched() {
     let t = [(0.0, 0.0), (58.43973750018408, 0.0), (-13.042932309701715, 24.24577289297152), (-19.82180099291569, 24.24577289297152)];

@@ -78,22 +78,11 @@ fn assert_closed(s: &Simulation) {
     }
 }
 
-/// Largest height of a vertex above any face's plane, relative to the size: 0 for a convex mesh.
+/// Largest height of a vertex above any face's plane, relative to the size (the largest
+/// distance of a vertex from the origin): 0 for a convex mesh.
 fn convexity_violation(s: &Simulation) -> f64 {
-    let x = &s.vertices;
-    let size = x.iter().map(|p| dot(*p, *p).sqrt()).fold(0.0, f64::max);
-    let mut worst = 0.0f64;
-    for &[i, j, k] in &s.triangles {
-        let n = cross(sub(x[j], x[i]), sub(x[k], x[i]));
-        let l = dot(n, n).sqrt();
-        if l < 1e-12 * size * size {
-            continue;
-        }
-        for p in x {
-            worst = worst.max(dot(n, sub(*p, x[i])) / l / size);
-        }
-    }
-    worst
+    let size = s.vertices.iter().map(|p| dot(*p, *p).sqrt()).fold(0.0, f64::max);
+    mesh_checks::outside_faces(s, size, 0.0)
 }
 
 #[test]

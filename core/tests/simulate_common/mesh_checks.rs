@@ -212,6 +212,28 @@ pub fn self_intersections(s: &Simulation, eps: f64) -> Vec<(usize, usize)> {
     out
 }
 
+/// Largest height of a vertex above the plane of a face (outward triangles), relative to
+/// `size`: zero (to round-off) for a convex mesh, whatever its triangulation. Faces whose
+/// doubled area is below 1e-12 of `size`², or whose least height is below `needle` times
+/// `size`, are skipped: their planes are round-off (a needle between two samples microns apart
+/// and a far vertex is tilted by round-off and by the difference of the pieces' chords).
+pub fn outside_faces(s: &Simulation, size: f64, needle: f64) -> f64 {
+    let x = &s.vertices;
+    let mut worst = 0.0f64;
+    for &[i, j, k] in &s.triangles {
+        let n = cross(sub(x[j], x[i]), sub(x[k], x[i]));
+        let area2 = norm(n);
+        let longest = [(i, j), (j, k), (k, i)].iter().map(|&(a, b)| norm(sub(x[a], x[b]))).fold(0.0, f64::max);
+        if area2 < 1e-12 * size * size || area2 <= needle * size * longest {
+            continue;
+        }
+        for p in x {
+            worst = worst.max(dot(n, sub(*p, x[i])) / area2 / size);
+        }
+    }
+    worst
+}
+
 /// Volume of the closed mesh (divergence theorem over its outward triangles).
 pub fn volume(s: &Simulation) -> f64 {
     s.triangles.iter().map(|t| dot(s.vertices[t[0]], cross(s.vertices[t[1]], s.vertices[t[2]]))).sum::<f64>() / 6.0
