@@ -87,3 +87,18 @@ fn test_issue_14_a_smooth_heart_with_its_copy_no_longer_passes_through_itself() 
 fn test_issue_14_a_kidney_with_its_copy_at_13_16_no_longer_closes_through_its_seam() {
     assert_a_kidney_with_its_copy_keeps_every_promise(13);
 }
+
+/// Regression: the five lobes glued to a copy of themselves at 6/64 of their perimeter (a hair
+/// from a gluing along a mirror line of the shape, whose form is the flat doubly covered sheet)
+/// ended flat, 3.5e-3 stretched, at volume 0: the thick homotopy had flattened the twins' thin
+/// pillow, and a flat sheet is an equilibrium no thinner stage can lift out of its plane. Its
+/// neighbours on the slider, 5/64 and 7/64, kept every promise. Followed again
+/// (`simulate::sheet::retry::FLAT`), it keeps every promise too, and encloses a volume.
+#[test]
+fn test_issue_14_five_lobes_with_their_copy_near_a_flat_gluing_no_longer_end_flat() {
+    let five = shapes::five_lobed();
+    let s = run(&five, &five, 6.0 / 64.0);
+    println!("6/64: {}", mesh_checks::report(&s));
+    assert_eq!(promise(&s), Ok(()), "6/64: {}", mesh_checks::report(&s));
+    assert!(volume(&s) > 0.0, "wanted a form that encloses a volume, got {:.3e} mm³", volume(&s));
+}

@@ -89,6 +89,23 @@ pub(crate) fn folded_flat(x: &[V3], tri: &[Triangulation; 2]) -> bool {
     area > (1.0 + 1e-6) * h2.abs()
 }
 
+/// Thickness of a closed mesh across the plane of its seam (vertices `0..seam`, in order),
+/// relative to its size: the largest distance of a vertex from the plane through the centroid
+/// normal to the seam loop's vector area, over the largest distance from the centroid.
+pub fn thickness(x: &[V3], seam: usize) -> f64 {
+    let (c, size) = centroid_and_radius(x);
+    let mut n = [0.0; 3];
+    for k in 0..seam {
+        let m = cross(sub(x[k], c), sub(x[(k + 1) % seam], c));
+        n = [n[0] + m[0], n[1] + m[1], n[2] + m[2]];
+    }
+    let l = norm(n);
+    if l == 0.0 || size == 0.0 {
+        return 0.0;
+    }
+    x.iter().map(|p| dot(n, sub(*p, c)).abs() / l).fold(0.0, f64::max) / size
+}
+
 /// Largest height of a vertex above the plane of a face (outward), relative to the largest
 /// distance of a vertex from the centroid: 0 for a convex mesh. Every `stride`-th vertex is
 /// tested against every face.
