@@ -191,6 +191,29 @@ for (const [name, a, b] of [['Pebble + its copy', pebble, pebble], ['kidney + it
   console.log(`  converged ${conv} of 16 ${mark(conv === 16)}   time median ${(times[7] / 2 + times[8] / 2).toFixed(0)} ms, largest ${times[15].toFixed(0)} ms (≤ 1000 ms) ${mark(times[15] <= 1000)}${slow.length ? `   over 1 s or not converged: ${slow.join(', ')}` : ''}`);
 }
 
+// Flat gluings: congruent pieces glued congruently make the flat doubly covered form. At offset 0
+// the two sample polygons coincide and the solve takes one step per level; at another congruent
+// gluing (a thin ellipse with its copy at half its perimeter) they differ by the arc-length
+// tables' accuracy, which the saddle start turned into a 0.5 s crawl back to flat until
+// convex/congruent.rs laid such pairs out directly. Printed against offset 0 in the same process.
+{
+  const thin = smooth(Array.from({ length: 72 }, (_, i) => { const t = (2 * Math.PI * i) / 72; return [60 * Math.cos(t), 7.5 * Math.sin(t)]; }));
+  const P = m.measure(thin).perimeter;
+  const time = (offset) => {
+    const ms = [];
+    let s;
+    for (let i = 0; i < 5; i++) {
+      const t0 = performance.now();
+      s = m.simulate([thin, thin], { offset, resolution: 256 }).stats;
+      ms.push(performance.now() - t0);
+    }
+    return { ms: ms.sort((x, y) => x - y)[2], s };
+  };
+  const [zero, half] = [time(0), time(P / 2)];
+  console.log('== an 8:1 ellipse (72 points) with its copy: flat at offset 0 and at half its perimeter (WASM, 256 seam vertices) ==');
+  console.log(`  half the perimeter ${half.ms.toFixed(1)} ms median of 5 vs offset 0 ${zero.ms.toFixed(1)} ms (${(half.ms / zero.ms).toFixed(2)}×, ≤ 2) ${mark(half.ms <= 2 * zero.ms)}   volume ${half.s.volume.toExponential(1)} and ${zero.s.volume.toExponential(1)}, converged ${half.s.converged} and ${zero.s.converged}`);
+}
+
 // Issue 14, convex pairs whose creases cross the seam: two congruent rectangles with 1 mm
 // rounded corners (the classic D-form of two equal pieces). The chord meshes cannot hold a crease
 // across the seam, so these take the intrinsic path (convex/crossing.rs) after the quick chord

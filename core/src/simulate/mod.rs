@@ -45,7 +45,9 @@
 //! nearly flat regions (pieces with straight stretches) settle slowly but correctly. Each finer
 //! level starts from the coarser answer, isometric up to O(h²), and is relaxed undamped first
 //! (with the cold damping only if that fails: the flat doubly covered sheet is a singular point);
-//! a warm start climbs the same ladder from a quarter of the resolution.
+//! a warm start climbs the same ladder from a quarter of the resolution. Congruent pieces glued
+//! congruently skip all of it: their answer, the flat doubly covered form, is laid out directly
+//! ([`convex::congruent`]).
 //!
 //! *Creases across the seam.* A chord triangulation keeps every edge inside one piece, but where
 //! both pieces are straight the seam is flat and a crease of the polyhedron can run straight

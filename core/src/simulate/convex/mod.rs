@@ -2,6 +2,7 @@
 //! a multistart on a coarse-to-fine ladder, hull restarts, and the cone-point solve of polygon
 //! pairs (see the module docs of [`crate::simulate`]).
 //!
+//! - [`congruent`]: congruent pieces glued congruently, laid out flat without a solve;
 //! - [`relax`]: LM on a fixed triangulation, flips between solves;
 //! - [`starts`]: the multistart's starting shapes;
 //! - [`hull`]: triangulations read off a convex hull, to restart a failed start;
@@ -11,6 +12,7 @@
 //!   seam ([`overlay`]), without the samples where both pieces run straight ([`flat`]).
 
 pub mod alexandrov;
+pub mod congruent;
 pub mod crossing;
 pub mod flat;
 pub mod hull;
@@ -35,6 +37,10 @@ use starts::{initial_guess, resample, upsample, LIFTS};
 /// Finds the seam positions at `options.resolution` seam vertices, from the warm start or cold
 /// (see [`solve_cold`]). Never panics; an input that cannot even be triangulated is an error.
 pub fn solve(glue: &Glue, options: &SimulateOptions) -> Result<(SeamPieces, Solution)> {
+    let pieces = glue.sample(options.resolution);
+    if let Some((x, tri)) = congruent::flat_layout(&pieces) {
+        return Ok((pieces, Solution { x, tri, iterations: 0, flips: 0, converged: true }));
+    }
     let Some(w) = &options.warm else { return solve_cold(glue, options) };
     let (pieces, x, tri, r) = warm_ladder(glue, options, w)?;
     if r.converged {
