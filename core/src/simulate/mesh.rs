@@ -161,7 +161,7 @@ const FLATTENED_STRAIN: f64 = 1e-7;
 /// the sum of A's area normals, is the flat answer those waves are round.
 ///
 /// The flat answer is laid out as piece A itself, turned onto the shape's projection by the
-/// rotation and shift that fit it best (least squares, Kabsch): its edges are then off only by
+/// rotation and shift that fit it best ([`super::fit`]): its edges are then off only by
 /// the difference of A's and B's chords, which is zero for a congruent gluing. The projection
 /// alone shortens each edge by the square of its waves' slope: an 8:1 ellipse with its copy at
 /// half its perimeter ended isometric to 6e-10 but wavy by 1.7e-5 of its size, and its
@@ -206,37 +206,19 @@ pub fn flatten_near_planar(pieces: &SeamPieces, sol: &mut Solution) -> bool {
 }
 
 /// Piece A's flat sample polygon `a` laid in the plane through `c` with unit normal `n`, turned
-/// and shifted onto the in-plane points `y` (the same vertices) by least squares: the rotation
-/// angle `atan2(Σ a'×y', Σ a'·y')` of the centred points (Kabsch's solution in 2D). A's
-/// counter-clockwise order faces `n` (the sum of A's area normals), so no reflection. `None`
-/// when the counts differ or the fit is degenerate.
+/// and shifted onto the in-plane points `y` (the same vertices) by least squares
+/// ([`super::fit::Rigid::fit`]). A's counter-clockwise order faces `n` (the sum of A's area
+/// normals), so no reflection. `None` when the counts differ or the fit is degenerate.
 fn a_laid_on(a: &[[f64; 2]], y: &[V3], c: V3, n: V3) -> Option<Vec<V3>> {
-    if a.len() != y.len() || a.is_empty() {
-        return None;
-    }
     let e1 = if n[0].abs() < 0.9 { [1.0, 0.0, 0.0] } else { [0.0, 1.0, 0.0] };
     let e1 = cross(n, e1);
     let l = norm(e1);
     let e1 = [e1[0] / l, e1[1] / l, e1[2] / l];
     let e2 = cross(n, e1);
     let q: Vec<[f64; 2]> = y.iter().map(|p| [dot(sub(*p, c), e1), dot(sub(*p, c), e2)]).collect();
-    let m = a.len() as f64;
-    let mean = |p: &[[f64; 2]]| p.iter().fold([0.0, 0.0], |s, v| [s[0] + v[0] / m, s[1] + v[1] / m]);
-    let (ca, cq) = (mean(a), mean(&q));
-    let (mut d, mut x) = (0.0, 0.0);
-    for (u, v) in a.iter().zip(&q) {
-        let (u, v) = ([u[0] - ca[0], u[1] - ca[1]], [v[0] - cq[0], v[1] - cq[1]]);
-        d += u[0] * v[0] + u[1] * v[1];
-        x += u[0] * v[1] - u[1] * v[0];
-    }
-    let r = d.hypot(x);
-    if !(r > 0.0) {
-        return None;
-    }
-    let (cs, sn) = (d / r, x / r);
+    let fit = super::fit::Rigid::fit(a, &q)?;
     Some(a.iter().map(|u| {
-        let u = [u[0] - ca[0], u[1] - ca[1]];
-        let p = [cq[0] + cs * u[0] - sn * u[1], cq[1] + sn * u[0] + cs * u[1]];
+        let p = fit.apply(*u);
         [c[0] + p[0] * e1[0] + p[1] * e2[0], c[1] + p[0] * e1[1] + p[1] * e2[1], c[2] + p[0] * e1[2] + p[1] * e2[2]]
     }).collect())
 }

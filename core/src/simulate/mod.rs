@@ -89,12 +89,13 @@
 //!   [`sheet`]: the elastic-sheet path of non-convex pairs (meshes with interior vertices, the
 //!   shell energy, the homotopy from convex twins);
 //! - [`frame`]: each piece moved to its first anchor and snapped, so that where a pair is
-//!   drawn does not change its form;
+//!   drawn does not change its form; [`fit`]: the least-squares turn and shift of one planar
+//!   point set onto another;
 //! - [`density`]: seam samples spaced by the curvature mismatch of the two pieces;
 //! - [`checks`]: dihedral signs, convexity as a whole, flat folds; [`stats`]: strain, seam gap,
 //!   area, angle defects, volume; [`clock`]: a timer that works natively and in wasm32.
 //!
-//! Imports run one way: `vec3`, `metric` ← `seam`, `mesh`, `checks`, `isometry` ← `convex` ←
+//! Imports run one way: `vec3`, `metric`, `fit` ← `seam`, `mesh`, `checks`, `isometry` ← `convex` ←
 //! `solve` ← this module; `stats` reads `mesh` and `checks`; `sheet` reads `convex` (the twins'
 //! polyhedron), `checks`, `stats` and `normal`, and only this module reads `sheet`; `frame`
 //! reads only `contour`.
@@ -103,6 +104,7 @@ pub mod checks;
 pub mod clock;
 pub mod convex;
 pub mod density;
+pub mod fit;
 pub mod frame;
 pub mod isometry;
 pub mod mesh;

@@ -13,13 +13,14 @@
 //! 3 ms at offset 0).
 //!
 //! So the pieces' sample polygons are first aligned by the rotation and shift that fit B's onto
-//! A's best (least squares, as the multistart's starts do), and when every sample of
+//! A's best ([`super::super::fit`], as the multistart's starts do), and when every sample of
 //! one then lies within [`NEAR`] of the other's, the average of the two layouts is tried as the
 //! answer: it is taken when every chord of both pieces' triangulations is within
 //! [`crate::simulate::isometry::STRAIN_TOL`] of its length there, what any converged answer of
 //! this path meets. Pieces that are not congruent fail the first test in one pass over the
 //! samples.
 
+use super::super::fit::Rigid;
 use super::super::isometry::{bars, max_strain, STRAIN_TOL};
 use super::super::metric::Triangulation;
 use super::super::seam::SeamPieces;
@@ -45,28 +46,17 @@ pub(crate) fn flat_layout(pieces: &SeamPieces) -> Option<(Vec<V3>, [Triangulatio
 }
 
 /// The largest distance between a sample of A and the same sample of B turned and shifted onto
-/// A by least squares, over the largest distance of A's samples from their centroid; `None` for
-/// a degenerate polygon.
+/// A by least squares ([`Rigid::fit`]), over the largest distance of A's samples from their
+/// centroid; `None` for a degenerate polygon.
 fn misfit(pieces: &SeamPieces) -> Option<f64> {
     let (a, b) = (&pieces.flat[0].pts, &pieces.flat[1].pts);
-    let m = a.len() as f64;
-    let mean = |p: &[[f64; 2]]| p.iter().fold([0.0, 0.0], |s, q| [s[0] + q[0] / m, s[1] + q[1] / m]);
-    let (ca, cb) = (mean(a), mean(b));
-    let (mut d, mut x) = (0.0, 0.0);
-    for (p, q) in a.iter().zip(b) {
-        let (u, v) = ([p[0] - ca[0], p[1] - ca[1]], [q[0] - cb[0], q[1] - cb[1]]);
-        d += u[0] * v[0] + u[1] * v[1];
-        x += v[0] * u[1] - v[1] * u[0];
-    }
-    let r = d.hypot(x);
-    let size = a.iter().map(|p| (p[0] - ca[0]).hypot(p[1] - ca[1])).fold(0.0, f64::max);
-    if !(r > 0.0 && size > 0.0) {
+    let fit = Rigid::fit(b, a)?;
+    let size = a.iter().map(|p| (p[0] - fit.to[0]).hypot(p[1] - fit.to[1])).fold(0.0, f64::max);
+    if !(size > 0.0) {
         return None;
     }
-    let (c, s) = (d / r, x / r);
     let far = a.iter().zip(b).map(|(p, q)| {
-        let v = [q[0] - cb[0], q[1] - cb[1]];
-        let t = [ca[0] + c * v[0] - s * v[1], ca[1] + s * v[0] + c * v[1]];
+        let t = fit.apply(*q);
         (t[0] - p[0]).hypot(t[1] - p[1])
     });
     Some(far.fold(0.0, f64::max) / size)
