@@ -405,8 +405,9 @@ fn congruent_ellipses_at_zero_offset_give_the_flat_doubly_covered_ellipse() {
 /// D-form is the flat doubly covered ellipse) ended isometric but wavy, its two sheets crossing
 /// each other by micrometres, and was called "crossing" at a volume of 1 mm³: laid onto its
 /// plane by projection, its edges came out 1.6e-7 short, above the 1e-7 that flattening
-/// allowed. Thin ellipses from 4:1 to 16:1 (smooth curves through 72 points, as a traced
-/// drawing has them) now lie flat, in one plane, converged.
+/// allowed. Such congruent gluings are now laid out flat before any solve
+/// (`simulate::convex::congruent`): thin ellipses from 4:1 to 16:1 (smooth curves through 72
+/// points, as a traced drawing has them) lie flat, in one plane, converged.
 #[test]
 fn test_issue_14_thin_ellipses_with_their_copy_at_half_the_perimeter_lie_flat() {
     for k in [4.0, 8.0, 12.0, 16.0] {

@@ -1,8 +1,7 @@
 //! The rotation and shift that take one planar point set onto another best, point for point:
 //! the least-squares rigid fit (Kabsch 1976; in 2D the angle is `atan2(Σ u×v, Σ u·v)` of the
-//! centred points `u` of the moving set and `v` of the target, no reflection). The flat doubly
-//! covered form is laid out with it: B's samples onto A's ([`super::convex::congruent`]), A's
-//! polygon onto a near-planar answer's projection ([`super::mesh::flatten_near_planar`]).
+//! centred points `u` of the moving set and `v` of the target, no reflection). Congruent pieces
+//! are told apart with it, B's samples fitted onto A's ([`super::convex::congruent`]).
 
 /// A rigid motion of the plane: `p ↦ to + R(p − from)`, `R` the rotation by the angle whose cosine
 /// and sine are `cos`, `sin`.

@@ -158,15 +158,9 @@ const FLATTENED_STRAIN: f64 = 1e-7;
 /// their perimeter, their control points snapped to grids of 2⁻²⁶…2⁻⁴⁴ of their size
 /// ([`super::frame`]), ended so for four of seven grids (sheets crossing at a volume of 1e-5 of
 /// area × size, or a vertex 2.7e-5 off a face plane); the plane through the centroid, normal to
-/// the sum of A's area normals, is the flat answer those waves are round.
-///
-/// The flat answer is laid out as piece A itself, turned onto the shape's projection by the
-/// rotation and shift that fit it best ([`super::fit`]): its edges are then off only by
-/// the difference of A's and B's chords, which is zero for a congruent gluing. The projection
-/// alone shortens each edge by the square of its waves' slope: an 8:1 ellipse with its copy at
-/// half its perimeter ended isometric to 6e-10 but wavy by 1.7e-5 of its size, and its
-/// projection 1.6e-7 strained, so it was kept wavy, its sheets crossing ("crossing" at 1 mm³).
-/// The projection stays the fallback when A's layout strains an edge more.
+/// the sum of A's area normals, is the flat answer those waves are round. (Congruent gluings
+/// other than the identity, whose waves the projection strained past that bound, are laid out
+/// flat before any solve: [`super::convex::congruent`].)
 pub fn flatten_near_planar(pieces: &SeamPieces, sol: &mut Solution) -> bool {
     let x = &sol.x;
     if x.is_empty() {
@@ -188,39 +182,16 @@ pub fn flatten_near_planar(pieces: &SeamPieces, sol: &mut Solution) -> bool {
     if x.iter().map(|p| off(p).abs()).fold(0.0, f64::max) > NEAR_PLANAR * size {
         return false;
     }
-    let bars = bars(pieces, &sol.tri);
-    let bound = max_strain(x, &bars).max(FLATTENED_STRAIN);
-    let projected: Vec<V3> = x.iter().map(|p| {
+    let flat: Vec<V3> = x.iter().map(|p| {
         let h = off(p);
         [p[0] - h * n[0], p[1] - h * n[1], p[2] - h * n[2]]
     }).collect();
-    let candidates = [a_laid_on(&pieces.flat[0].pts, &projected, c, n), Some(projected)];
-    let best = candidates.into_iter().flatten().map(|y| (max_strain(&y, &bars), y)).filter(|(s, _)| *s <= bound).min_by(|a, b| a.0.total_cmp(&b.0));
-    match best {
-        Some((_, y)) => {
-            sol.x = y;
-            true
-        }
-        None => false,
+    let bars = bars(pieces, &sol.tri);
+    if max_strain(&flat, &bars) > max_strain(x, &bars).max(FLATTENED_STRAIN) {
+        return false;
     }
-}
-
-/// Piece A's flat sample polygon `a` laid in the plane through `c` with unit normal `n`, turned
-/// and shifted onto the in-plane points `y` (the same vertices) by least squares
-/// ([`super::fit::Rigid::fit`]). A's counter-clockwise order faces `n` (the sum of A's area
-/// normals), so no reflection. `None` when the counts differ or the fit is degenerate.
-fn a_laid_on(a: &[[f64; 2]], y: &[V3], c: V3, n: V3) -> Option<Vec<V3>> {
-    let e1 = if n[0].abs() < 0.9 { [1.0, 0.0, 0.0] } else { [0.0, 1.0, 0.0] };
-    let e1 = cross(n, e1);
-    let l = norm(e1);
-    let e1 = [e1[0] / l, e1[1] / l, e1[2] / l];
-    let e2 = cross(n, e1);
-    let q: Vec<[f64; 2]> = y.iter().map(|p| [dot(sub(*p, c), e1), dot(sub(*p, c), e2)]).collect();
-    let fit = super::fit::Rigid::fit(a, &q)?;
-    Some(a.iter().map(|u| {
-        let p = fit.apply(*u);
-        [c[0] + p[0] * e1[0] + p[1] * e2[0], c[1] + p[0] * e1[1] + p[1] * e2[1], c[2] + p[0] * e1[2] + p[1] * e2[2]]
-    }).collect())
+    sol.x = flat;
+    true
 }
 
 #[cfg(test)]
