@@ -627,6 +627,10 @@ fn mismatched_perimeters_and_bad_options_are_clear_errors() {
     let err = simulate(&e, &big, &SimulateOptions::default()).unwrap_err();
     assert!(matches!(err, Error::PerimeterMismatch { .. }), "got {err}");
     assert!(err.to_string().contains("Normalize"), "got {err}");
+    // The perimeters it names are the input's, not those of the frames the pieces are solved in.
+    let Error::PerimeterMismatch { a, b } = err else { unreachable!() };
+    let (pa, pb) = (perimeter(&e), perimeter(&big));
+    assert!((a / pa - 1.0).abs() < 1e-6 && (b / pb - 1.0).abs() < 1e-6, "wanted the perimeters {pa} and {pb}, got {a} and {b}");
     let err = SimulateOptions::new(Some(f64::NAN), None, None, None).unwrap_err();
     assert!(err.to_string().contains("offset"), "got {err}");
     let err = SimulateOptions::new(None, Some(3.0), None, None).unwrap_err();

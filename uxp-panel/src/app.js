@@ -541,9 +541,9 @@
    * is no stretched guess, and telling a student it "stretches up to 0 %" explained nothing. The
    * fold's advice is what the core's tests find (simulate_nonconvex.rs,
    * test_issue_14_a_shallower_bay_avoids_the_crease_that_rounded_corners_keep): an L whose notch
-   * is half its width creases the circle with its corners sharp or rounded by 5–15 mm; with a
-   * notch of a quarter it does not, and a heart drawn with corners stops creasing it when its
-   * dip is made shallower.
+   * is half its width creases the circle with its corners sharp or rounded by 2–10 mm; with a
+   * notch of a quarter, its corners rounded, it does not (sharp, it bends by about 90°, on the
+   * line), and a heart drawn with corners stops creasing it when its dip is made shallower.
    */
   function approximateText(st) {
     var tail = ' OBJ/STL export this approximate shape.';

@@ -1,5 +1,6 @@
-//! Each piece in a frame of its own: moved so that its first anchor is the origin, and every
-//! control point snapped to a binary grid of about 2⁻³⁰ of the piece's size.
+//! Both pieces in frames of their own: each moved so that its first anchor is the origin, both
+//! scaled by one unit so that the first piece measures [`SIZE`] across, and every control point
+//! snapped to a binary grid of about 2⁻³⁰ of its piece's size.
 //!
 //! Why: the sheet path's answer is a deterministic function of the input's bits, and it turns
 //! on them. Its meshes come from Delaunay refinement, whose exact in-circle tests decide on a
@@ -7,17 +8,25 @@
 //! equilibrium of the thin sheet (see [`super::sheet`]). So the same drawing moved on the
 //! artboard gave another form: moved by (250.1, 400.9) mm the L with a circle had a volume of
 //! 73,438 mm³ against 77,548, the heart drawn with corners 118,459 against 116,432 (256 seam
-//! vertices, native). In a piece's own frame the drawing and its moved copy differ only by the
-//! rounding of `p − origin`, about `ulp(|p| + |move|)` (2e-13 mm for a move of a metre), and the
-//! snap takes both to the same grid point unless one lies within that of a grid point's midway
-//! line: the odds are ~1e-6 per coordinate. The snap moves a point by at most half a cell,
-//! ~5e-10 of the piece's size (5e-8 mm on a 100 mm piece), far below the 1e-6 perimeter rule
-//! and below anything a cutter resolves.
+//! vertices, native). And the same drawing in other units: over seven scales (millimetres,
+//! points, inches, CSS pixels, ×0.01, ×100, ×0.3) the kidney with a circle spread by 1.7 % in
+//! volume, the five lobes by 2.0 %, the heart drawn with corners by 6.2 % and the L by 6.6 %,
+//! so a drawing read in points (the panel) and in millimetres (an Inkscape document) gave forms
+//! a few percent apart.
+//!
+//! In the frames the drawing and its moved or scaled copy differ only by the rounding of
+//! `(p − origin) / unit`, a few units in the last place of [`SIZE`], and the snap takes both to
+//! the same grid point unless one lies within that of a grid point's midway line: the odds are
+//! ~1e-6 per coordinate. The offset along the seam is reduced by the input's perimeter and
+//! scaled and snapped the same way ([`offset`]). The snap moves a point by at most half a cell, ~5e-10 of the piece's
+//! size (5e-8 mm on a 100 mm piece), far below the 1e-6 perimeter rule and below anything a
+//! cutter resolves.
 //!
 //! The grid is a power of two, so the snap is exact arithmetic, chosen by `ceil(log₂ size + ½)`:
-//! its steps fall at sizes `2ᵏ/√2`, which no drawing in round millimetres or inches has, so a
-//! moved copy (whose size differs in its last bits) gets the same grid. What the host reads
-//! back, `flat`, is moved back by the origin ([`Frame::to_input`]): the input's coordinates.
+//! its steps fall at sizes `2ᵏ/√2`; the first piece's size in its frame is [`SIZE`], far from
+//! any step, and a second piece of equal perimeter is seldom within rounding of one. What the
+//! host reads back goes back to the input's units and place ([`Frame::to_input`],
+//! [`Frame::length_out`]).
 
 use crate::contour::{Contour, Knot};
 use kurbo::Point;
@@ -25,46 +34,114 @@ use kurbo::Point;
 /// The grid cell as a power of two below the piece's size.
 pub const GRID_BITS: i32 = 30;
 
+/// The first piece's size (the larger side of its control points' bounding box) in its frame.
+/// Any positive number would do; this one is a power of two and the size of a typical drawing
+/// in millimetres.
+///
+/// Another value is another draw of every sheet path's meshes, as another unit was before the
+/// frames were scaled, so it is also how to measure what a claim about the sheet path owes to
+/// one draw: over eight values (90–150) the five lobes with a circle spread by 0.1–4.2 % in
+/// volume between 128, 192 and 256 seam vertices, the Pebble with a circle by at most 0.3 %
+/// (see the tests of requirement 3 in `core/tests/simulate_nonconvex.rs`).
+pub const SIZE: f64 = 128.0;
+
 /// Farthest the snap moves a point, relative to the piece's size: half a cell's diagonal, the
 /// cell being at most `2^(1.5 − GRID_BITS)` of the size (`ceil(log₂ size + ½)` exceeds
 /// `log₂ size` by at most 1.5), so `2^(1 − GRID_BITS)`, 1.9e-9.
 pub const SNAP_MOVE: f64 = 2.0 / (1u64 << GRID_BITS) as f64;
 
-/// Where a piece's frame sits in the input's coordinates.
+/// Where a piece's frame sits in the input's coordinates: its origin, the input length of one
+/// frame unit, and the frame's grid cell.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Frame {
     pub origin: Point,
+    pub unit: f64,
+    pub cell: f64,
 }
 
 impl Frame {
+    /// The frame of an outline kept as it is.
+    const INPUT: Frame = Frame { origin: Point::ZERO, unit: 1.0, cell: 0.0 };
+
     /// A point of the piece's frame in the input's coordinates.
     pub fn to_input(&self, p: [f64; 2]) -> [f64; 2] {
-        [p[0] + self.origin.x, p[1] + self.origin.y]
+        [p[0] * self.unit + self.origin.x, p[1] * self.unit + self.origin.y]
+    }
+
+    /// A length of the frame (an arc length, a distance) in the input's units.
+    pub fn length_out(&self, l: f64) -> f64 {
+        l * self.unit
+    }
+
+    /// A length of the input (the offset along the seam) in the frame, snapped to the frame's
+    /// grid like the control points, so that a scaled drawing's offset gets the same bits.
+    pub fn length_in(&self, l: f64) -> f64 {
+        let f = l / self.unit;
+        if self.cell > 0.0 && (f / self.cell).is_finite() {
+            (f / self.cell).round() * self.cell
+        } else {
+            f
+        }
     }
 }
 
-/// `c` in its own frame (see the module docs), and the frame. An outline whose size is not a
-/// positive finite number, or whose snapped copy is not a valid contour, is kept as it is, in
-/// the frame at the origin: the checks that follow give their own messages on it.
-pub fn local(c: &Contour, piece: usize) -> (Contour, Frame) {
-    let keep = (c.clone(), Frame { origin: Point::ZERO });
-    let Some(first) = c.knots().first() else { return keep };
-    let origin = first.anchor;
+/// Relative accuracy of the perimeter an offset is reduced by ([`offset`]).
+pub const PERIOD_ACCURACY: f64 = 1e-13;
+
+/// `offset` along `b` (the second piece as the input has it) in `b`'s frame `f`: reduced
+/// modulo `b`'s perimeter, then [`Frame::length_in`].
+///
+/// Why here: the offset is periodic, and an offset of many perimeters is the gluing of its
+/// remainder. Reduced in the frame (as [`super::seam::Glue`] also does), the period would be
+/// the snapped outline's perimeter, which differs from the input's in about the tenth digit,
+/// and `k` perimeters on carry `k` times that into the remainder: the rounded rectangle with an
+/// octagon a million perimeters on had a volume 1.4e-6 from its own at the remainder. Reduced
+/// by the input's perimeter (to [`PERIOD_ACCURACY`]) the remainder is off by `k · 1e-13` of it.
+pub fn offset(offset: f64, b: &Contour, f: &Frame) -> f64 {
+    let period = crate::arclen::ArcTable::new(b, PERIOD_ACCURACY).total();
+    let reduced = if period.is_finite() && period > 0.0 && offset.is_finite() { offset.rem_euclid(period) } else { offset };
+    f.length_in(reduced)
+}
+
+/// The larger side of `c`'s control points' bounding box, by halves so that ±1e308
+/// coordinates do not overflow.
+fn size(c: &Contour) -> f64 {
     let (lo, hi) = c.control_bounds();
-    // By halves, so that ±1e308 coordinates do not overflow.
-    let size = 2.0 * (hi.x / 2.0 - lo.x / 2.0).max(hi.y / 2.0 - lo.y / 2.0);
+    2.0 * (hi.x / 2.0 - lo.x / 2.0).max(hi.y / 2.0 - lo.y / 2.0)
+}
+
+/// `c` moved to its first anchor, scaled by `1 / unit` and snapped, with its frame; `None` when
+/// that is no valid contour or has no size.
+fn local(c: &Contour, unit: f64, piece: usize) -> Option<(Contour, Frame)> {
+    let origin = c.knots().first()?.anchor;
+    let scale = |p: Point| Point::new((p.x - origin.x) / unit, (p.y - origin.y) / unit);
+    let scaled: Vec<Knot> = c.knots().iter().map(|k| Knot { anchor: scale(k.anchor), left: scale(k.left), right: scale(k.right) }).collect();
+    let size = size(&Contour::new(scaled.clone(), piece).ok()?);
     if !(size.is_finite() && size > 0.0) {
-        return keep;
+        return None;
     }
     let cell = 2f64.powi((size.log2() + 0.5).ceil() as i32 - GRID_BITS);
     if !cell.is_normal() {
+        return None;
+    }
+    let snap = |p: Point| Point::new((p.x / cell).round() * cell, (p.y / cell).round() * cell);
+    let knots = scaled.iter().map(|k| Knot { anchor: snap(k.anchor), left: snap(k.left), right: snap(k.right) }).collect();
+    Some((Contour::new(knots, piece).ok()?, Frame { origin, unit, cell }))
+}
+
+/// `a` and `b` in their frames (see the module docs), with the frames. When either cannot be
+/// framed (an outline whose size is not a positive finite number, or a second piece too large
+/// for the first's unit) both are kept as they are, in the input's frame: the checks that follow
+/// give their own messages on them.
+pub fn pair(a: &Contour, b: &Contour) -> ((Contour, Frame), (Contour, Frame)) {
+    let keep = ((a.clone(), Frame::INPUT), (b.clone(), Frame::INPUT));
+    let unit = size(a) / SIZE;
+    if !(unit.is_normal() && unit.is_finite()) {
         return keep;
     }
-    let snap = |p: Point| Point::new(((p.x - origin.x) / cell).round() * cell, ((p.y - origin.y) / cell).round() * cell);
-    let knots: Vec<Knot> = c.knots().iter().map(|k| Knot { anchor: snap(k.anchor), left: snap(k.left), right: snap(k.right) }).collect();
-    match Contour::new(knots, piece) {
-        Ok(moved) => (moved, Frame { origin }),
-        Err(_) => keep,
+    match (local(a, unit, 0), local(b, unit, 1)) {
+        (Some(fa), Some(fb)) => (fa, fb),
+        _ => keep,
     }
 }
 
@@ -73,49 +150,68 @@ mod tests {
     use super::*;
     use kurbo::Affine;
 
-    fn wavy(m: usize) -> Contour {
+    fn wavy(m: usize, r0: f64) -> Contour {
         let knots = (0..m)
             .map(|k| {
                 let t = std::f64::consts::TAU * k as f64 / m as f64;
-                let r = 50.0 * (1.0 + 0.2 * (3.0 * t).sin());
+                let r = r0 * (1.0 + 0.2 * (3.0 * t).sin());
                 let a = Point::new(r * t.cos() + 3.3, r * t.sin() - 7.1);
-                Knot { anchor: a, left: Point::new(a.x + 4.0 * t.sin(), a.y - 4.0 * t.cos()), right: Point::new(a.x - 4.0 * t.sin(), a.y + 4.0 * t.cos()) }
+                let h = 0.08 * r0;
+                Knot { anchor: a, left: Point::new(a.x + h * t.sin(), a.y - h * t.cos()), right: Point::new(a.x - h * t.sin(), a.y + h * t.cos()) }
             })
             .collect();
         Contour::new(knots, 0).unwrap()
     }
 
-    /// A drawing and its copies moved across the artboard get the very same bits in their own
-    /// frames, each frame's origin is the copy's first anchor, and no point moved by more than
-    /// half a cell.
+    /// A drawing and its copies moved across the artboard or drawn in other units (points,
+    /// inches, metres) get the very same bits in their frames, each frame's origin is the copy's
+    /// first anchor, its unit scales with the copy, and no point moved by more than half a cell.
     #[test]
-    fn moved_copies_get_the_same_bits_in_their_own_frames() {
-        let c = wavy(24);
-        let (base, frame) = local(&c, 0);
-        assert_eq!(frame.origin, c.knots()[0].anchor);
-        let (lo, hi) = c.control_bounds();
-        let half_cell = 0.5 * 2f64.powi(((hi.x - lo.x).max(hi.y - lo.y).log2() + 0.5).ceil() as i32 - GRID_BITS);
-        for (k, q) in c.knots().iter().zip(base.knots()) {
-            let back = frame.to_input([q.anchor.x, q.anchor.y]);
-            let d = (back[0] - k.anchor.x).abs().max((back[1] - k.anchor.y).abs());
-            assert!(d <= half_cell * (1.0 + 1e-9), "snap moved an anchor by {d:e}, wanted ≤ {half_cell:e}");
+    fn moved_and_scaled_copies_get_the_same_bits_in_their_frames() {
+        let (a, b) = (wavy(24, 50.0), wavy(17, 43.0));
+        let ((base_a, fa), (base_b, fb)) = pair(&a, &b);
+        assert_eq!(fa.origin, a.knots()[0].anchor);
+        assert_eq!(fb.origin, b.knots()[0].anchor);
+        assert_eq!(fa.unit, fb.unit);
+        let (lo, hi) = base_a.control_bounds();
+        let got = (hi.x - lo.x).max(hi.y - lo.y);
+        assert!((got - SIZE).abs() < 1e-6, "the first piece measures {got} in its frame, wanted {SIZE}");
+        for (c, base, f) in [(&a, &base_a, fa), (&b, &base_b, fb)] {
+            for (k, q) in c.knots().iter().zip(base.knots()) {
+                let back = f.to_input([q.anchor.x, q.anchor.y]);
+                let d = (back[0] - k.anchor.x).abs().max((back[1] - k.anchor.y).abs());
+                let half_cell = 0.5 * f.cell * f.unit;
+                assert!(d <= half_cell * (1.0 + 1e-9), "snap moved an anchor by {d:e}, wanted ≤ {half_cell:e}");
+            }
         }
-        for (dx, dy) in [(37.3, -11.7), (250.1, 400.9), (-1000.3, 3.3), (1e-7, 0.0), (25_400.0, -25_400.0)] {
-            let (moved, f) = local(&c.transformed(Affine::translate((dx, dy))), 0);
-            let diff = base.knots().iter().zip(moved.knots()).filter(|(a, b)| a != b).count();
-            assert_eq!(diff, 0, "moved by ({dx}, {dy}): {diff} of {} knots got other bits", c.len());
-            assert!((f.origin.x - (c.knots()[0].anchor.x + dx)).abs() < 1e-9);
+        let offset = 37.123_456_789;
+        for (dx, dy, k) in [(37.3, -11.7, 1.0), (250.1, 400.9, 1.0), (-1000.3, 3.3, 1.0), (1e-7, 0.0, 1.0), (0.0, 0.0, 72.0 / 25.4), (12.5, -3.0, 1.0 / 25.4), (0.0, 0.0, 0.001), (-7.0, 2.0, 96.0 / 25.4), (0.0, 0.0, 100.0)] {
+            let m = Affine::translate((dx, dy)) * Affine::scale(k);
+            let ((ma, ga), (mb, gb)) = pair(&a.transformed(m), &b.transformed(m));
+            for (base, moved) in [(&base_a, &ma), (&base_b, &mb)] {
+                let diff = base.knots().iter().zip(moved.knots()).filter(|(p, q)| p != q).count();
+                assert_eq!(diff, 0, "moved by ({dx}, {dy}) and scaled by {k}: {diff} of {} knots got other bits", base.len());
+            }
+            assert!((ga.origin.x - (k * a.knots()[0].anchor.x + dx)).abs() < 1e-9);
+            assert!((gb.unit / fb.unit - k).abs() < 1e-12 * k, "unit {} against {} × {k}", gb.unit, fb.unit);
+            assert_eq!(ga.length_in(k * offset).to_bits(), fa.length_in(offset).to_bits(), "the offset scaled by {k} got other bits");
         }
     }
 
-    /// Outlines the snap cannot take stay as they are (their checks follow).
+    /// Outlines the frames cannot take stay as they are, both of them (their checks follow).
     #[test]
     fn outlines_without_a_size_are_kept() {
         let dot = Contour::new(vec![Knot::corner(Point::new(1.0, 2.0)), Knot::corner(Point::new(1.0, 2.0))], 0).unwrap();
-        let (same, f) = local(&dot, 0);
-        assert_eq!(same.knots(), dot.knots());
-        assert_eq!(f.origin, Point::ZERO);
+        let square = Contour::new([(0.0, 0.0), (5.0, 0.0), (5.0, 5.0), (0.0, 5.0)].map(|(x, y)| Knot::corner(Point::new(x, y))).to_vec(), 1).unwrap();
+        for (a, b) in [(&dot, &square), (&square, &dot)] {
+            let ((ka, fa), (kb, fb)) = pair(a, b);
+            assert_eq!((ka.knots(), kb.knots()), (a.knots(), b.knots()));
+            assert_eq!((fa.origin, fa.unit, fb.unit), (Point::ZERO, 1.0, 1.0));
+        }
         let huge = Contour::new(vec![Knot::corner(Point::new(-1e308, 0.0)), Knot::corner(Point::new(1e308, 1.0)), Knot::corner(Point::new(0.0, 1e308))], 0).unwrap();
-        assert_eq!(local(&huge, 0).0.knots(), huge.knots());
+        assert_eq!(pair(&huge, &square).0 .0.knots(), huge.knots());
+        // A second piece too large for the first's unit.
+        let tiny = square.transformed(Affine::scale(1e-300));
+        assert_eq!(pair(&tiny, &huge).1 .0.knots(), huge.knots());
     }
 }

@@ -88,9 +88,9 @@
 //!   and the intrinsic triangulation for creases across the seam);
 //!   [`sheet`]: the elastic-sheet path of non-convex pairs (meshes with interior vertices, the
 //!   shell energy, the homotopy from convex twins);
-//! - [`frame`]: each piece moved to its first anchor and snapped, so that where a pair is
-//!   drawn does not change its form; [`fit`]: the least-squares turn and shift of one planar
-//!   point set onto another;
+//! - [`frame`]: each piece moved to its first anchor, scaled and snapped, so that where and in
+//!   what units a pair is drawn does not change its form; [`fit`]: the least-squares turn and
+//!   shift of one planar point set onto another;
 //! - [`density`]: seam samples spaced by the curvature mismatch of the two pieces;
 //! - [`checks`]: dihedral signs, convexity as a whole, flat folds; [`stats`]: strain, seam gap,
 //!   area, angle defects, volume; [`clock`]: a timer that works natively and in wasm32.
@@ -98,7 +98,7 @@
 //! Imports run one way: `vec3`, `metric`, `fit` ← `seam`, `mesh`, `checks`, `isometry` ← `convex` ←
 //! `solve` ← this module; `stats` reads `mesh` and `checks`; `sheet` reads `convex` (the twins'
 //! polyhedron), `checks`, `stats` and `normal`, and only this module reads `sheet`; `frame`
-//! reads only `contour`.
+//! reads only `contour` and `arclen`.
 
 pub mod checks;
 pub mod clock;
@@ -121,7 +121,7 @@ pub mod vec3;
 
 use crate::contour::Contour;
 use mesh::Solution;
-use crate::error::Result;
+use crate::error::{Error, Result};
 pub use options::SimulateOptions;
 pub use stats::{Crease, Shortfall, Stats};
 
@@ -159,10 +159,21 @@ pub fn simulate(a: &Contour, b: &Contour, options: &SimulateOptions) -> Result<S
 /// ([`progress`]): the same result, for a host that shows progress.
 pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn FnMut(progress::Progress)) -> Result<Simulation> {
     let timer = clock::Timer::start();
-    // Each piece in its own frame, so that where the pair sits on the artboard cannot change
-    // its form ([`frame`]); `flat` goes back to the input's coordinates at the end.
-    let ((a, fa), (b, fb)) = (frame::local(a, 0), frame::local(b, 1));
-    let glue = seam::Glue::new(&a, &b, options.offset)?;
+    // Each piece in its own frame, so that where the pair sits on the artboard and the units it
+    // is drawn in cannot change its form ([`frame`]); the answer goes back to the input's units
+    // and place at the end.
+    let ((framed_a, fa), (framed_b, fb)) = frame::pair(a, b);
+    let offset = frame::offset(options.offset, b, &fb);
+    let (a, b) = (framed_a, framed_b);
+    let options = &SimulateOptions {
+        offset,
+        warm: options.warm.as_ref().map(|w| w.iter().map(|p| p.map(|c| c / fa.unit)).collect()),
+        ..options.clone()
+    };
+    let glue = seam::Glue::new(&a, &b, options.offset).map_err(|e| match e {
+        Error::PerimeterMismatch { a, b } => Error::PerimeterMismatch { a: fa.length_out(a), b: fa.length_out(b) },
+        e => e,
+    })?;
     // Convex at the coarsest samples and at the resolution's: an outline that bends inward by
     // a hair between coarse samples (a 200 × 40 ellipse through 64 smooth points) is no convex
     // metric at the resolution, and the convex path would spend the whole budget on it.
@@ -229,6 +240,13 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         let f = if p == 0 { fa } else { fb };
         *corners = corners.map(|q| f.to_input(q));
     }
+    let u = fa.unit;
+    for v in &mut sim.vertices {
+        *v = v.map(|c| c * u);
+    }
+    sim.stats.seam_gap *= u;
+    sim.stats.area *= u * u;
+    sim.stats.volume *= u * u * u;
     sim.stats.ms = timer.elapsed_ms();
     Ok(sim)
 }
