@@ -249,13 +249,14 @@ for (const k of [4, 5, 12]) {
 }
 
 // Sensitivity (issue 14, requirement 3 presumes it is small): the same pair moved on the
-// artboard, and one knot of the first piece moved by 0.01 mm (four knots in turn). A moved
-// pair is the same drawing, so its form should not change at all; a 0.01 mm nudge changes the
-// volume by ~1e-4 of itself, so a spread above that is the solver's, not the drawing's. Today
-// the sheet path is deterministic for a given mesh, but the flat pieces' Delaunay refinement
-// (a circle's samples are all but cocircular) and the seam weights' bins turn on the last bits
-// of the samples, and another mesh ends in another equilibrium. Printed: the volumes' spread
-// (max − min over min), the distinct answers and how many converged.
+// artboard, the same pair in other units (points, inches, CSS pixels: volumes divided by the
+// scale's cube), and one knot of the first piece moved by 0.01 mm (four knots in turn). A
+// moved or rescaled pair is the same drawing, so its form should not change at all; a 0.01 mm
+// nudge changes the volume by ~1e-4 of itself, so a spread above that is the solver's, not the
+// drawing's. Today the sheet path is deterministic for a given mesh, but the flat pieces'
+// Delaunay refinement (a circle's samples are all but cocircular) and the seam weights' bins
+// turn on the last bits of the samples, and another mesh ends in another equilibrium. Printed:
+// the volumes' spread (max − min over min), the distinct answers and how many converged.
 const moved = (path, [dx, dy]) => ({ closed: true, points: path.points.map((q) => ({ anchor: [q.anchor[0] + dx, q.anchor[1] + dy], left: [q.left[0] + dx, q.left[1] + dy], right: [q.right[0] + dx, q.right[1] + dy] })) });
 const nudged = (path, k) => {
   const j = (7 * k) % path.points.length, d = [0.01, -0.005];
@@ -269,13 +270,17 @@ const spread = (runs) => {
 };
 // An L-shaped hexagon (one reflex corner, shapes.rs' l_shape): every knot a corner.
 const lShape = { closed: true, points: [[0, 0], [80, 0], [80, 40], [40, 40], [40, 80], [0, 80]].map((a) => ({ anchor: a, left: a, right: a })) };
-console.log('== sensitivity (WASM, 256 seam vertices): the pair moved on the artboard, and one knot moved by 0.01 mm ==');
+console.log('== sensitivity (WASM, 256 seam vertices): the pair moved on the artboard, in other units, and one knot moved by 0.01 mm ==');
 for (const [name, a] of [['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart drawn with corners + circle', drawnHeart], ['L + circle', lShape]]) {
   const solve = (p, q) => m.simulate([p, q], { offset: 0, resolution: 256 }).stats;
   const c = circleFor(a);
   const base = solve(a, c);
   const mv = spread([base, ...[[37.3, -11.7], [250.1, 400.9], [-1000.3, 3.3]].map((d) => solve(moved(a, d), moved(c, [d[0] / 2 - 17, d[1]])))]);
+  const sc = spread([base, ...[72 / 25.4, 1 / 25.4, 96 / 25.4].map((k) => {
+    const s = solve(scaled(a, k), scaled(c, k));
+    return { ...s, volume: s.volume / k ** 3 };
+  })]);
   const ng = spread([base, ...[1, 2, 3, 4].map((k) => { const p = nudged(a, k); return solve(p, circleFor(p)); })]);
   const line = (w, r, bound) => `${w} ${(100 * r.dv).toFixed(2)} % (${r.distinct} distinct of ${r.n}, converged ${r.conv}) (≤ ${bound} %) ${mark(r.dv <= bound / 100)}`;
-  console.log(`  ${name.padEnd(36)} ${line('moved: volume spread', mv, 0.01)}   ${line('nudged 0.01 mm:', ng, 1)}`);
+  console.log(`  ${name.padEnd(36)} ${line('moved: volume spread', mv, 0.01)}   ${line('in pt, in, px:', sc, 0.01)}   ${line('nudged 0.01 mm:', ng, 1)}`);
 }
