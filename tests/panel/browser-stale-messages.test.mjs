@@ -39,6 +39,9 @@ test('Anchor # 0 after 99: the field is marked, the message gives the valid rang
   assert.equal(await page.isDisabled('#apply-btn'), true, 'nothing is downloaded with a number the panel does not use');
 
   await page.fill(anchorA, '2');
+  // The error about 0 is still on screen until the panel has read the new number, and
+  // waitReady takes an error with a message as settled: wait for that message to go first.
+  await page.waitForFunction(() => !/Anchor|anchor/.test(document.querySelector('#message').textContent));
   await waitReady(page);
   assert.equal(await page.evaluate((s) => document.querySelector(s).classList.contains('invalid'), anchorA), false);
   assert.equal(await page.evaluate(() => document.body.dataset.state), 'ready', await page.textContent('#message'));
