@@ -18,9 +18,9 @@
 //! `(p − origin) / unit`, a few units in the last place of [`SIZE`], and the snap takes both to
 //! the same grid point unless one lies within that of a grid point's midway line: the odds are
 //! ~1e-6 per coordinate. The offset along the seam is reduced by the input's perimeter and
-//! scaled and snapped the same way ([`offset`]). The snap moves a point by at most half a cell, ~5e-10 of the piece's
-//! size (5e-8 mm on a 100 mm piece), far below the 1e-6 perimeter rule and below anything a
-//! cutter resolves.
+//! scaled and snapped the same way ([`offset`]). The snap moves a point by at most half a
+//! cell, ~5e-10 of the piece's size (5e-8 mm on a 100 mm piece), far below the 1e-6 perimeter
+//! rule and below anything a cutter resolves.
 //!
 //! The grid is a power of two, so the snap is exact arithmetic, chosen by `ceil(log₂ size + ½)`:
 //! its steps fall at sizes `2ᵏ/√2`; the first piece's size in its frame is [`SIZE`], far from
