@@ -114,9 +114,12 @@ fn size(c: &Contour) -> f64 {
 /// that is no valid contour or has no size.
 fn local(c: &Contour, unit: f64, piece: usize) -> Option<(Contour, Frame)> {
     let origin = c.knots().first()?.anchor;
+    // `(p − origin) / unit` by hand rather than `Contour::transformed`, whose affine map would
+    // round `p · (1/unit) + (−origin · (1/unit))` instead: here one subtraction and one
+    // division, the rounding the module docs count.
     let scale = |p: Point| Point::new((p.x - origin.x) / unit, (p.y - origin.y) / unit);
-    let scaled: Vec<Knot> = c.knots().iter().map(|k| Knot { anchor: scale(k.anchor), left: scale(k.left), right: scale(k.right) }).collect();
-    let size = size(&Contour::new(scaled.clone(), piece).ok()?);
+    let scaled = Contour::new(c.knots().iter().map(|k| Knot { anchor: scale(k.anchor), left: scale(k.left), right: scale(k.right) }).collect(), piece).ok()?;
+    let size = size(&scaled);
     if !(size.is_finite() && size > 0.0) {
         return None;
     }
@@ -125,7 +128,7 @@ fn local(c: &Contour, unit: f64, piece: usize) -> Option<(Contour, Frame)> {
         return None;
     }
     let snap = |p: Point| Point::new((p.x / cell).round() * cell, (p.y / cell).round() * cell);
-    let knots = scaled.iter().map(|k| Knot { anchor: snap(k.anchor), left: snap(k.left), right: snap(k.right) }).collect();
+    let knots = scaled.knots().iter().map(|k| Knot { anchor: snap(k.anchor), left: snap(k.left), right: snap(k.right) }).collect();
     Some((Contour::new(knots, piece).ok()?, Frame { origin, unit, cell }))
 }
 

@@ -57,8 +57,9 @@
 //! the L with a circle had 73,438 mm³ against 77,548, 256 seam vertices, native); now each
 //! piece is taken in a frame of its own ([`crate::simulate::frame`]), and a moved pair is the
 //! same to the last bit; since stop 43 so is a pair drawn in other units (the frames share a
-//! unit taken from the first piece's size), which gave forms up to 2.4 % apart. A real edit still draws another mesh: with one knot moved by 0.01 mm (a
-//! change of ~1e-4 of the volume) in four ways, the kidney with a circle spreads by 0.01 %, the
+//! unit taken from the first piece's size), which gave forms up to 6.6 % apart. A real edit
+//! still draws another mesh: with one knot moved by 0.01 mm (a change of ~1e-4 of the volume)
+//! in four ways, the kidney with a circle spreads by 0.01 %, the
 //! Pebble by 0.2 %, the five lobes by 2 %, and the unconverged pairs with a reflex corner by
 //! more (the heart drawn with corners 5 %, the L 14 %). The meshes
 //! have many equilibria there, not one each: the five lobes' answer on one mesh, carried onto
