@@ -52,6 +52,11 @@ pub struct StatsDto {
     /// `null` when converged, else why not: `"sampling"`, `"stretch"`, `"crossing"`, `"fold"` or
     /// `"unsettled"` ([`crate::simulate::Shortfall`]).
     pub shortfall: Option<String>,
+    /// `true` when one piece is a circle and the other is not convex: then the seam offset does
+    /// not change the form (every offset gives this mesh, the circle's `flat` turned), see
+    /// [`crate::simulate::round`]. Results serialized before it was reported have none.
+    #[serde(default)]
+    pub offset_free: bool,
 }
 
 impl From<&Stats> for StatsDto {
@@ -73,6 +78,7 @@ impl From<&Stats> for StatsDto {
             ms: s.ms,
             max_bend: s.max_bend,
             shortfall: s.shortfall.map(|f| f.name().to_string()),
+            offset_free: s.offset_free,
         }
     }
 }

@@ -89,8 +89,9 @@
 //!   [`sheet`]: the elastic-sheet path of non-convex pairs (meshes with interior vertices, the
 //!   shell energy, the homotopy from convex twins);
 //! - [`frame`]: each piece moved to its first anchor, scaled and snapped, so that where and in
-//!   what units a pair is drawn does not change its form; [`fit`]: the least-squares turn and
-//!   shift of one planar point set onto another;
+//!   what units a pair is drawn does not change its form; [`round`]: a circle, whose seam
+//!   offset does not change the form either (solved at offset 0, the circle turned);
+//!   [`fit`]: the least-squares turn and shift of one planar point set onto another;
 //! - [`density`]: seam samples spaced by the curvature mismatch of the two pieces;
 //! - [`checks`]: dihedral signs, convexity as a whole, flat folds; [`stats`]: strain, seam gap,
 //!   area, angle defects, volume; [`clock`]: a timer that works natively and in wasm32.
@@ -98,7 +99,7 @@
 //! Imports run one way: `vec3`, `metric`, `fit` ← `seam`, `mesh`, `checks`, `isometry` ← `convex` ←
 //! `solve` ← this module; `stats` reads `mesh` and `checks`; `sheet` reads `convex` (the twins'
 //! polyhedron), `checks`, `stats` and `normal`, and only this module reads `sheet`; `frame`
-//! reads only `contour` and `arclen`.
+//! reads only `contour` and `arclen`, `round` those and this module's `Simulation`.
 
 pub mod checks;
 pub mod clock;
@@ -112,6 +113,7 @@ pub mod metric;
 pub mod normal;
 pub mod options;
 pub mod progress;
+pub mod round;
 pub mod kink;
 pub mod seam;
 pub mod sheet;
@@ -178,6 +180,11 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     // a hair between coarse samples (a 200 × 40 ellipse through 64 smooth points) is no convex
     // metric at the resolution, and the convex path would spend the whole budget on it.
     let convex = [seam::COARSEST, options.resolution].iter().all(|&n| glue.sample(n).flat.iter().all(|f| checks::is_convex_polygon(&f.pts)));
+    // A non-convex piece with a circle: every offset is the offset-0 form with the circle turned
+    // ([`round`]), so it is solved at offset 0, on one mesh of the circle.
+    let circle = if convex { None } else { round::round_piece(&a, &b) };
+    let turn = circle.and_then(|(piece, c)| round::Turn::new(piece, c, options.offset));
+    let glue = if turn.is_some() { seam::Glue::new(&a, &b, 0.0)? } else { glue };
     // A pair with a non-convex piece: the convex path gives the sheet path its start (or, when
     // it meets every promise, e.g. the flat doubly covered sheet, the answer) on a short budget.
     // A previous result's vertices are no warm start here: a sheet's answer has interior vertices.
@@ -236,6 +243,10 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         }
     }
     stats::judge(&mut sim, !convex);
+    if let Some(turn) = turn {
+        turn.turn(&mut sim, a.knots()[0].anchor);
+    }
+    sim.stats.offset_free = circle.is_some();
     for (corners, &p) in sim.flat.iter_mut().zip(&sim.piece) {
         let f = if p == 0 { fa } else { fb };
         *corners = corners.map(|q| f.to_input(q));

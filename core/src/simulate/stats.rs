@@ -44,6 +44,10 @@ pub struct Stats {
     pub max_bend: f64,
     /// Why an answer is not `converged` ([`Shortfall`]); `None` when it is.
     pub shortfall: Option<Shortfall>,
+    /// One piece is a circle and the other is not convex, so the seam offset does not change
+    /// the form: every offset gives this mesh, the circle's flat coordinates turned
+    /// ([`crate::simulate::round`]).
+    pub offset_free: bool,
 }
 
 /// What keeps an unconverged answer from being the D-form, the first of these that holds on the
@@ -314,6 +318,7 @@ pub fn finish(pieces: &SeamPieces, sol: Solution) -> Simulation {
         ms: 0.0,
         max_bend: 0.0,
         shortfall: None,
+        offset_free: false,
     };
     Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, creases: Vec::new(), stats }
 }

@@ -120,6 +120,7 @@ pub fn simulation(pieces: &SeamPieces, mesh: &SheetMesh, shell: &Shell, x: &[V3]
         ms: 0.0,
         max_bend: 0.0,
         shortfall: None,
+        offset_free: false,
     };
     Simulation { vertices: x, triangles, piece, seam: (0..n).collect(), flat, creases: Vec::new(), stats }
 }
