@@ -137,11 +137,14 @@ pub fn run(file: &SvgFile, ids: &[String], a: &FormArgs) -> Result<(), String> {
                 "volume": f.volume, "litres": f.litres, "mass": f.mass, "density": f.density,
                 "area": st.area, "height": f.height, "width": f.width, "depth": f.depth,
                 "maxStrain": st.max_strain, "converged": st.converged,
-                "maxBendDegrees": st.max_bend.to_degrees(), "shortfall": st.shortfall,
+                "maxBendDegrees": st.max_bend.to_degrees(), "shortfall": st.shortfall, "offsetFree": st.offset_free,
             })
         )
     } else {
         let mut t = format!("offset     {} {u} ({}% of the perimeter {} {u})\n", g(offset), g(100.0 * fraction), g(p.perimeter));
+        if st.offset_free {
+            t += "           one piece is a circle: every offset gives this form\n";
+        }
         t += &format!("volume     {} {u}³ = {} L\n", g(f.volume), g(f.litres));
         t += &format!("mass       {} kg at {} kg/m³ (concrete: 2400)\n", g(f.mass), g(f.density));
         t += &format!("area       {} {u}²\n", g(st.area));
@@ -187,24 +190,31 @@ fn sweep(file: &SvgFile, ids: &[String], a: &FormArgs, n: usize) -> Result<(), S
         return Err(format!("-o {}: with --sweep, -o writes the plot as .svg", path.display()));
     }
     let p = pieces(file, ids)?;
-    let mut rows = Vec::with_capacity(n);
+    let mut rows: Vec<Row> = Vec::with_capacity(n);
+    let mut offset_free = false;
     for k in 0..n {
         let fraction = k as f64 / n as f64;
         let offset = fraction * p.perimeter;
+        // With a circle the core gives offset 0's form at every offset (`offsetFree`): one solve.
+        if offset_free {
+            rows.push(Row { fraction, offset, ..rows[0] });
+            continue;
+        }
         let (sim, f) = solve(&p, offset, a)?;
+        offset_free = sim.stats.offset_free;
         rows.push(Row { fraction, offset, volume: f.volume, litres: f.litres, height: f.height, converged: sim.stats.converged });
     }
-    let largest = plot::best(&rows, |r| r.volume);
-    let tallest = plot::best(&rows, |r| r.height);
+    let (largest, tallest) = if offset_free { (None, None) } else { (plot::best(&rows, |r| r.volume), plot::best(&rows, |r| r.height)) };
     let u = &p.unit;
     let text = if a.json {
         let list: Vec<_> = rows
             .iter()
             .map(|r| json!({ "offset": r.offset, "fraction": r.fraction, "volume": r.volume, "litres": r.litres, "height": r.height, "converged": r.converged }))
             .collect();
-        format!("{}\n", json!({ "unit": u, "perimeter": p.perimeter, "rows": list, "largest": largest, "tallest": tallest }))
+        format!("{}\n", json!({ "unit": u, "perimeter": p.perimeter, "rows": list, "largest": largest, "tallest": tallest, "offsetFree": offset_free }))
     } else {
-        let mut t = format!("{:>4}  {:>12}  {:>6}  {:>14}  {:>10}  {:>10}\n", "#", format!("offset {u}"), "turn", format!("volume {u}³"), "litres", format!("height {u}"));
+        let mut t = if offset_free { "one piece is a circle: the seam offset does not change the form, every row is the same solve\n".to_string() } else { String::new() };
+        t += &format!("{:>4}  {:>12}  {:>6}  {:>14}  {:>10}  {:>10}\n", "#", format!("offset {u}"), "turn", format!("volume {u}³"), "litres", format!("height {u}"));
         for (i, r) in rows.iter().enumerate() {
             let mut marks = Vec::new();
             if largest == Some(i) {

@@ -74,6 +74,32 @@ fn sweep_on_congruent_ellipses_is_flat_at_zero_and_half_a_turn_with_a_maximum_be
     assert!(doc.descendants().any(|n| n.attribute("id") == Some("volume") && n.attribute("d").is_some_and(|d| d.matches('L').count() >= 7)));
 }
 
+/// Regression (issue 14): with a circle every seam offset glues the same metric, but the sweep
+/// solved each offset on another mesh of the circle and marked a "largest" among them. Now the
+/// core gives one form at every offset (`offsetFree`), and the sweep says so: every row the
+/// same, nothing marked, and a separate `dformer form` at another offset the same volume.
+#[test]
+fn sweep_with_a_circle_is_one_form_and_says_so() {
+    let svg = scratch("l-circle-sweep.svg", L_AND_CIRCLE);
+    let s = svg.to_str().unwrap();
+    let j = json_of(&["form", s, "--sweep", "4", "--resolution", "128", "--json"]);
+    assert_eq!(j["offsetFree"], Value::Bool(true), "{j}");
+    assert!(j["largest"].is_null() && j["tallest"].is_null(), "wanted nothing marked: {j}");
+    let rows = j["rows"].as_array().unwrap();
+    let v0 = rows[0]["volume"].as_f64().unwrap();
+    assert!(v0 > 0.0, "a real volume: {v0}");
+    for r in rows {
+        assert_eq!(r["volume"].as_f64(), Some(v0), "every row the same form: {r}");
+    }
+    let one = json_of(&["form", s, "--offset", "30%", "--resolution", "128", "--json"]);
+    assert_eq!(one["offsetFree"], Value::Bool(true));
+    assert_eq!(one["volume"].as_f64(), Some(v0), "at 30 %: wanted offset 0's volume");
+    let (code, table, err) = dformer(&["form", s, "--sweep", "4", "--resolution", "128"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(table.starts_with("one piece is a circle: the seam offset does not change the form"), "{table}");
+    assert!(!table.contains("largest") && !table.contains("tallest"), "{table}");
+}
+
 fn parse_obj(text: &str) -> (Vec<[f64; 3]>, Vec<[usize; 3]>) {
     let (mut v, mut f) = (Vec::new(), Vec::new());
     for line in text.lines() {

@@ -204,3 +204,39 @@ test('3D tab: connectors on the form sit on the surface at their mapped flat pos
   }
   await page.close();
 });
+
+// Regression (issue 14): with the sample "Pebble + circle" the sweep drew 32 solves of one form,
+// each on another mesh of the circle, as a curve (volume spread over offsets by up to 3 %), and
+// "Largest" chose among meshes. A circle turned about its centre is itself, so every offset is
+// the same form: the core now says so (`offsetFree`), the sweep stops after one solve and says
+// why, and nothing is ringed as largest or tallest.
+test('3D tab: with a circle the sweep is one form at every offset, said so, nothing ringed', { timeout: 300000 }, async () => {
+  const page = await panel.browser.newPage({ viewport: { width: 1100, height: 760 } });
+  await open3d(page, 'pebble-circle');
+  await page.waitForFunction(() => document.body.dataset.sweep === 'done', null, { timeout: SWEEP_TIMEOUT });
+  const st = await page.evaluate(() => window.DF.app.sweep());
+  assert.equal(st.points.length, 32, 'a point at every offset');
+  assert.ok(st.offsetFree, 'the sweep knows the offset does not change the form');
+  // Independent of the sweep: simulate at two offsets gives the same 3D vertices and volume.
+  const direct = await page.evaluate(() => {
+    const d = window.DF.app.design();
+    const pieces = d.pieces.map((p) => p.path);
+    const [f0, f1] = [0, 0.3 * d.perimeter].map((offset) => window.DF.core.simulate(pieces, { offset }));
+    return { same: JSON.stringify(f0.vertices) === JSON.stringify(f1.vertices), v0: f0.stats.volume, v1: f1.stats.volume, free: f0.stats.offsetFree && f1.stats.offsetFree, converged: f0.stats.converged };
+  });
+  assert.ok(direct.same && direct.v0 === direct.v1 && direct.free, `simulate at offsets 0 and 0.3 of the perimeter: same form ${direct.same}, volumes ${direct.v0} and ${direct.v1}`);
+  for (const p of st.points) {
+    assert.equal(p.volume, direct.v0, `offset ${p.offset}: the plot's volume is the form's`);
+    assert.equal(p.converged, direct.converged);
+  }
+  const shown = await page.evaluate(() => ({
+    text: document.querySelector('#sweep-status').textContent,
+    rings: document.querySelectorAll('#sweep-plot circle.best').length,
+    largest: document.querySelector('#sweep-largest').disabled,
+    tallest: document.querySelector('#sweep-tallest').disabled,
+  }));
+  assert.match(shown.text, /One piece is a circle, so the seam offset does not change the form: [\d.]+ L, height .+ at every offset/);
+  assert.equal(shown.rings, 0, 'no offset ringed as largest or tallest');
+  assert.ok(shown.largest && shown.tallest, 'Largest and Tallest have nothing to choose');
+  await page.close();
+});

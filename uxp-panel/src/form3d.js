@@ -16,6 +16,11 @@
     var n = st.points.length;
     var text = '';
     if (st.error) return 'No sweep: ' + st.error;
+    if (st.offsetFree && st.done && n) {
+      var p = st.points[0];
+      return 'One piece is a circle, so the seam offset does not change the form: ' + sig(p.litres) + ' L, height ' + fmt(p.height) +
+        ' at every offset' + (p.converged ? '' : ' (not converged ×)');
+    }
     if (st.running) text = 'Sampling the seam: ' + n + ' of ' + st.count + ' offsets…';
     else if (st.done) {
       text = n + ' offsets';

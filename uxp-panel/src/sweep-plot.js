@@ -65,8 +65,9 @@
         el('title', {}, u).textContent = 'No converged form at this offset';
       }
     });
-    var big = DF.sweep.best(pts, 'volume');
-    var tall = DF.sweep.best(pts, 'height');
+    // With a circle every offset is one form (st.offsetFree): none is the largest or tallest.
+    var big = st.offsetFree ? null : DF.sweep.best(pts, 'volume');
+    var tall = st.offsetFree ? null : DF.sweep.best(pts, 'height');
     if (big) el('circle', { class: 'best volume', id: 'sweep-max-volume', cx: x(big.fraction), cy: yv(big.litres), r: 4 }, svg);
     if (tall) el('circle', { class: 'best height', id: 'sweep-max-height', cx: x(tall.fraction), cy: yh(tall.height), r: 4 }, svg);
     if (fraction !== null && fraction !== undefined && isFinite(fraction)) {

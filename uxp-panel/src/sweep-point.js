@@ -18,6 +18,8 @@
       height: f.height,
       width: f.width,
       depth: f.depth,
+      // One piece is a circle: every offset gives this form (the core's simulate/round.rs).
+      offsetFree: !!form.stats.offsetFree,
     };
   };
 })(typeof self !== 'undefined' ? self : window);

@@ -2,7 +2,9 @@
  * N offsets over one full turn, solved one offset at a time on a worker thread of its own (so the
  * slider's solves never wait behind it), coarse first: every 4th offset of 32, then every 2nd, then
  * the rest, so the curve's shape shows after a quarter of the work. A new set of pieces cancels the
- * sweep (results of the old pieces are dropped, nothing more is queued). Host-agnostic.
+ * sweep (results of the old pieces are dropped, nothing more is queued). When one piece is a
+ * circle the offset does not change the form (the first point says so, `offsetFree`): the sweep
+ * ends there, every offset a copy of it. Host-agnostic.
  * create({ onChange }) → { request(key, pieces, perimeter), cancel(), state() }. */
 (function (DF) {
   'use strict';
@@ -39,7 +41,7 @@
   function create(hooks) {
     var run = runner();
     var gen = 0;
-    var st = { key: '', perimeter: 0, count: COUNT, points: [], done: false, running: false, error: '' };
+    var st = { key: '', perimeter: 0, count: COUNT, points: [], done: false, running: false, error: '', offsetFree: false };
     var queue = [];
     var pieces = null;
 
@@ -60,6 +62,14 @@
         p.index = k;
         p.fraction = k / st.count;
         st.points.push(p);
+        if (p.offsetFree) {
+          // One piece is a circle: the core gives this very form at every offset, so the other
+          // offsets are copies of it and need no solve.
+          st.offsetFree = true;
+          queue.splice(0).forEach(function (j) {
+            st.points.push(Object.assign({}, p, { index: j, fraction: j / st.count, offset: (j / st.count) * st.perimeter }));
+          });
+        }
         st.points.sort(function (a, b) { return a.index - b.index; });
         changed();
         next(g);
@@ -76,7 +86,7 @@
       if (key === st.key && (st.running || st.done || st.error)) return;
       gen++;
       pieces = newPieces;
-      st = { key: key, perimeter: perimeter, count: COUNT, points: [], done: false, running: true, error: '' };
+      st = { key: key, perimeter: perimeter, count: COUNT, points: [], done: false, running: true, error: '', offsetFree: false };
       queue = order(COUNT);
       changed();
       next(gen);
@@ -86,7 +96,7 @@
       if (!st.key) return;
       gen++;
       queue = [];
-      st = { key: '', perimeter: 0, count: COUNT, points: [], done: false, running: false, error: '' };
+      st = { key: '', perimeter: 0, count: COUNT, points: [], done: false, running: false, error: '', offsetFree: false };
       changed();
     }
     return { request: request, cancel: cancel, state: function () { return st; } };
