@@ -270,7 +270,7 @@ const spread = (runs) => {
 };
 // An L-shaped hexagon (one reflex corner, shapes.rs' l_shape): every knot a corner.
 const lShape = { closed: true, points: [[0, 0], [80, 0], [80, 40], [40, 40], [40, 80], [0, 80]].map((a) => ({ anchor: a, left: a, right: a })) };
-console.log('== sensitivity (WASM, 256 seam vertices): the pair moved on the artboard, in other units, and one knot moved by 0.01 mm ==');
+console.log('== sensitivity (WASM, 256 seam vertices): the pair moved on the artboard, in other units, one knot moved by 0.01 mm, and the seam offset around the circle ==');
 for (const [name, a] of [['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart drawn with corners + circle', drawnHeart], ['L + circle', lShape]]) {
   const solve = (p, q) => m.simulate([p, q], { offset: 0, resolution: 256 }).stats;
   const c = circleFor(a);
@@ -281,6 +281,11 @@ for (const [name, a] of [['kidney + circle', kidney], ['five-lobed + circle', lo
     return { ...s, volume: s.volume / k ** 3 };
   })]);
   const ng = spread([base, ...[1, 2, 3, 4].map((k) => { const p = nudged(a, k); return solve(p, circleFor(p)); })]);
+  // Around the circle: a circle turned is itself, so every offset glues one metric (the core
+  // solves such a pair at offset 0 and turns the circle, simulate/round.rs; before, each offset
+  // drew another mesh of the circle: the kidney spread by 2.8 % over 16 offsets, the L by 15 %).
+  const P = m.measure(a).perimeter;
+  const around = spread([base, ...[3, 7, 11].map((k) => m.simulate([a, c], { offset: (k / 16) * P, resolution: 256 }).stats)]);
   const line = (w, r, bound) => `${w} ${(100 * r.dv).toFixed(2)} % (${r.distinct} distinct of ${r.n}, converged ${r.conv}) (≤ ${bound} %) ${mark(r.dv <= bound / 100)}`;
-  console.log(`  ${name.padEnd(36)} ${line('moved: volume spread', mv, 0.01)}   ${line('in pt, in, px:', sc, 0.01)}   ${line('nudged 0.01 mm:', ng, 1)}`);
+  console.log(`  ${name.padEnd(36)} ${line('moved: volume spread', mv, 0.01)}   ${line('in pt, in, px:', sc, 0.01)}   ${line('nudged 0.01 mm:', ng, 1)}   ${line('offsets 0, 3, 7, 11/16:', around, 0.01)}`);
 }
