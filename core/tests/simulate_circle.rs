@@ -41,6 +41,30 @@ fn clockwise_at(c: &Contour, t: f64) -> Point {
     ArcTable::new(&c, 1e-13).point_at(t)
 }
 
+/// Arc length along `c` (counter-clockwise from its first anchor, as the seam walks A) of the
+/// point of `c` nearest `q`, and that distance: the nearest of 8,192 points equally spaced in
+/// arc length, refined by a ternary search between its neighbours.
+fn arc_of(c: &Contour, q: [f64; 2]) -> (f64, f64) {
+    let c = if c.signed_area() < 0.0 { c.reversed() } else { c.clone() };
+    let table = ArcTable::new(&c, 1e-13);
+    let p = table.total();
+    let d = |t: f64| table.point_at(t).distance(Point::new(q[0], q[1]));
+    let n = 8192;
+    let h = p / n as f64;
+    let k = (0..n).min_by(|&i, &j| d(i as f64 * h).total_cmp(&d(j as f64 * h))).unwrap();
+    let (mut lo, mut hi) = ((k as f64 - 1.0) * h, (k as f64 + 1.0) * h);
+    for _ in 0..100 {
+        let (m1, m2) = (lo + (hi - lo) / 3.0, hi - (hi - lo) / 3.0);
+        if d(m1) < d(m2) {
+            hi = m2;
+        } else {
+            lo = m1;
+        }
+    }
+    let t = (lo + hi) / 2.0;
+    (t.rem_euclid(p), d(t))
+}
+
 /// Arc length of the circle (centre 0, first anchor at angle 0, counter-clockwise) from its
 /// first anchor to `q`, counter-clockwise, in `[0, P)`.
 fn arc_on_circle(q: [f64; 2], perimeter: f64) -> f64 {
@@ -138,4 +162,52 @@ fn near_circles_and_convex_pairs_are_solved_at_their_offset() {
     let ellipse = shapes::with_perimeter(&shapes::circle(1.0, 8).transformed(Affine::scale_non_uniform(2.0, 1.0)), p);
     let convex = run(&ellipse, &shapes::circle_for(&ellipse), 3.0 / 16.0 * p);
     assert!(convex.stats.converged && !convex.stats.offset_free, "ellipse + circle: wanted the convex path's answer, offset_free false");
+}
+
+/// Regression (issue 14): the five-lobed flower is carried onto itself by a fifth of a turn, so
+/// a kidney glued to it at offsets a fifth of the perimeter apart glues one metric; they gave
+/// forms 1.5–2.2 % apart, converged at one offset and not at the other. Now an offset past the
+/// first fifth is solved at its remainder and the flower turned: the same mesh and form a fifth
+/// and three fifths on (to the offset's last bits), every edge at its flat length, every seam
+/// point on both outlines (the turn is exact), and every seam vertex glues the kidney's point at
+/// arc length `t` to the flower's at `t + s` (clockwise) for the offset `s` asked. Likewise a
+/// kidney with a 2:1 ellipse of eight arcs half a perimeter on.
+#[test]
+fn test_issue_14_a_turn_symmetric_second_piece_has_one_form_a_period_on() {
+    let kidney = shapes::kidney();
+    let per = shapes::perimeter(&kidney);
+    let five = shapes::with_perimeter(&shapes::five_lobed(), per);
+    let ellipse = shapes::with_perimeter(&shapes::circle(1.0, 8).transformed(Affine::scale_non_uniform(2.0, 1.0)), per);
+    for (what, b, period, shifts) in [("kidney + five lobes", five, 0.2, vec![1.0, 3.0]), ("kidney + 2:1 ellipse", ellipse, 0.5, vec![1.0])] {
+        let base = run(&kidney, &b, 0.05 * per);
+        for m in shifts {
+            let s = (0.05 + m * period) * per;
+            let at = format!("{what} at {:.2} of the perimeter", s / per);
+            let got = run(&kidney, &b, s);
+            // The same mesh and form, up to the offset's last bits: the period is a fifth of B's
+            // own perimeter, and the offsets asked are fractions of A's, one cell of the frame
+            // apart (the forms 1.5–2.2 % apart before).
+            assert_eq!(got.triangles, base.triangles, "{at}: wanted the mesh at 0.05");
+            assert_eq!(got.stats.converged, base.stats.converged, "{at}: wanted the verdict at 0.05");
+            let moved = got.vertices.iter().zip(&base.vertices).map(|(p, q)| (0..3).map(|k| (p[k] - q[k]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
+            assert!(moved <= 1e-4 * per, "{at}: a vertex {moved:.2e} from the form at 0.05");
+            let (v, v0) = (volume(&got), volume(&base));
+            assert!((v - v0).abs() <= 1e-6 * v0, "{at}: volume {v}, at 0.05 {v0}");
+            assert!(!got.stats.offset_free, "{at}: the offset does change the form within a period");
+            assert!((max_edge_strain(&got) - max_edge_strain(&base)).abs() <= 1e-9, "{at}: edge strain from flat changed");
+            let (on_a, on_b) = (seam_flat(&got, 0), seam_flat(&got, 1));
+            let mut worst = 0.0f64;
+            for (j, (qa, qb)) in on_a.iter().zip(&on_b).enumerate().step_by(3) {
+                let (t, gap) = arc_of(&kidney, *qa);
+                assert!(gap <= 1e-9 * per, "{at}: seam vertex {j} lies {gap:.2e} off the kidney");
+                let (_, gap_b) = arc_of(&b, *qb);
+                assert!(gap_b <= 1e-6 * per, "{at}: seam vertex {j} lies {gap_b:.2e} off B's outline");
+                let want = clockwise_at(&b, t + s);
+                worst = worst.max((qb[0] - want.x).hypot(qb[1] - want.y));
+            }
+            assert!(worst <= 1e-6 * per, "{at}: a seam vertex glues points {worst:.2e} from the offset's pairing");
+            let start = kidney.knots()[0].anchor;
+            assert!((on_a[0][0] - start.x).hypot(on_a[0][1] - start.y) <= 1e-9 * per, "{at}: the seam starts at {:?}, not A's start", on_a[0]);
+        }
+    }
 }

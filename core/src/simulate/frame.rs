@@ -76,7 +76,13 @@ impl Frame {
     /// A length of the input (the offset along the seam) in the frame, snapped to the frame's
     /// grid like the control points, so that a scaled drawing's offset gets the same bits.
     pub fn length_in(&self, l: f64) -> f64 {
-        let f = l / self.unit;
+        self.snap(l / self.unit)
+    }
+
+    /// A length of the frame on its cell, as [`Frame::length_in`] leaves every length: an offset
+    /// reduced by a period in the frame ([`super::round`]) then has the bits of the same offset
+    /// given within the period.
+    pub fn snap(&self, f: f64) -> f64 {
         if self.cell > 0.0 && (f / self.cell).is_finite() {
             (f / self.cell).round() * self.cell
         } else {

@@ -90,7 +90,8 @@
 //!   shell energy, the homotopy from convex twins);
 //! - [`frame`]: each piece moved to its first anchor, scaled and snapped, so that where and in
 //!   what units a pair is drawn does not change its form; [`round`]: a circle, whose seam
-//!   offset does not change the form either (solved at offset 0, the circle turned);
+//!   offset does not change the form either (solved at offset 0, the circle turned), and a B
+//!   that a turn of 2π/k carries onto itself (solved within the first k-th of the perimeter);
 //!   [`fit`]: the least-squares turn and shift of one planar point set onto another;
 //! - [`density`]: seam samples spaced by the curvature mismatch of the two pieces;
 //! - [`checks`]: dihedral signs, convexity as a whole, flat folds; [`stats`]: strain, seam gap,
@@ -182,9 +183,14 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     let convex = [seam::COARSEST, options.resolution].iter().all(|&n| glue.sample(n).flat.iter().all(|f| checks::is_convex_polygon(&f.pts)));
     // A non-convex piece with a circle: every offset is the offset-0 form with the circle turned
     // ([`round`]), so it is solved at offset 0, on one mesh of the circle.
-    let circle = if convex { None } else { round::round_piece(&a, &b) };
-    let turn = circle.and_then(|(piece, c)| round::Turn::new(piece, c, options.offset));
-    let glue = if turn.is_some() { seam::Glue::new(&a, &b, 0.0)? } else { glue };
+    // Likewise B turned onto itself by 2π/k: an offset past the first k-th of the perimeter is
+    // solved at its remainder (on the frame's cell, the bits of that offset given directly).
+    let symmetry = if convex { None } else { round::round_piece(&a, &b) };
+    let turn = symmetry.and_then(|(piece, s)| round::Turn::new(piece, s, options.offset));
+    let glue = match turn {
+        Some((_, at)) => seam::Glue::new(&a, &b, fb.snap(at))?,
+        None => glue,
+    };
     // A pair with a non-convex piece: the convex path gives the sheet path its start (or, when
     // it meets every promise, e.g. the flat doubly covered sheet, the answer) on a short budget.
     // A previous result's vertices are no warm start here: a sheet's answer has interior vertices.
@@ -243,10 +249,10 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         }
     }
     stats::judge(&mut sim, !convex);
-    if let Some(turn) = turn {
+    if let Some((turn, _)) = turn {
         turn.turn(&mut sim, a.knots()[0].anchor);
     }
-    sim.stats.offset_free = circle.is_some();
+    sim.stats.offset_free = matches!(symmetry, Some((_, s)) if s.order == 0);
     for (corners, &p) in sim.flat.iter_mut().zip(&sim.piece) {
         let f = if p == 0 { fa } else { fb };
         *corners = corners.map(|q| f.to_input(q));
