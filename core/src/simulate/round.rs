@@ -59,41 +59,11 @@ pub const SAMPLES: usize = 256;
 /// Relative accuracy of the arc lengths the check walks.
 const ACCURACY: f64 = 1e-12;
 
-/// The circle `c` is within [`TOLERANCE`]: its centre and perimeter.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Circle {
-    pub centre: Point,
-    pub perimeter: f64,
-}
-
-/// `c` as a circle, or `None` when it is none (see the module docs). Never panics: a degenerate
-/// or non-finite outline is no circle.
-pub fn circle(c: &Contour) -> Option<Circle> {
-    let table = ArcTable::new(c, ACCURACY);
-    let p = table.total();
-    if !(p.is_finite() && p > 0.0) {
-        return None;
-    }
-    let pts: Vec<Point> = (0..SAMPLES).map(|k| table.point_at(p * k as f64 / SAMPLES as f64)).collect();
-    // Equally spaced in arc length on a circle, the samples' mean is its centre.
-    let n = SAMPLES as f64;
-    let centre = Point::new(pts.iter().map(|q| q.x).sum::<f64>() / n, pts.iter().map(|q| q.y).sum::<f64>() / n);
-    let r = p / TAU;
-    let sense = if c.signed_area() >= 0.0 { 1.0 } else { -1.0 };
-    let start = (pts[0] - centre).atan2();
-    let round = pts.iter().enumerate().all(|(k, q)| {
-        let a = start + sense * TAU * k as f64 / n;
-        let want = Point::new(centre.x + r * a.cos(), centre.y + r * a.sin());
-        q.distance(want) <= TOLERANCE * r
-    });
-    (round && centre.x.is_finite() && centre.y.is_finite()).then_some(Circle { centre, perimeter: p })
-}
-
-/// Largest order of turn symmetry looked for ([`symmetry`]): a flower of up to twelve petals.
+/// Largest order of turn symmetry looked for ([`order`]): a flower of up to twelve petals.
 pub const MAX_ORDER: usize = 12;
 
 /// How closely, relative to `P/2π`, a piece must map onto itself for a turn symmetry of finite
-/// order ([`symmetry`]): round-off and the frame's snap (2⁻³⁰ of the size), not drawing. Its
+/// order ([`order`]): round-off and the frame's snap (2⁻³⁰ of the size), not drawing. Its
 /// turned flat then lies on its outline and keeps every promise of an unturned one; an ellipse
 /// of five or seven Bézier arcs, which is symmetric only to about 1e-4, is left as it is.
 pub const EXACT: f64 = 1e-7;
@@ -108,26 +78,44 @@ pub struct Symmetry {
     pub order: usize,
 }
 
-/// The turn symmetry of `c` ([`Symmetry`]) when it is a circle ([`circle`]); else, when
-/// `finite` is set, the largest order `k` up to [`MAX_ORDER`] for which the point `P/k` further
-/// along `c` from each of [`SAMPLES`] points equally spaced in arc length is that point turned
-/// by `2π/k` (the sense `c` runs) about one centre, within [`EXACT`] of `P/2π`. The centre is
-/// the least-squares one, `(I − R)⁻¹ · mean(q − R p)` for the turn `R`, exact for a symmetric
-/// outline. `None` when `c` has none. Never panics.
-pub fn symmetry(c: &Contour, finite: bool) -> Option<Symmetry> {
-    if let Some(o) = circle(c) {
-        return Some(Symmetry { centre: o.centre, perimeter: o.perimeter, order: 0 });
-    }
-    if !finite {
-        return None;
-    }
+/// [`SAMPLES`] points of `c` equally spaced in arc length from its first anchor, with the arc
+/// length table, the perimeter and the sense `c` runs (1 counter-clockwise, −1 clockwise);
+/// `None` for an outline without a positive finite perimeter.
+fn samples(c: &Contour) -> Option<(ArcTable, f64, Vec<Point>, f64)> {
     let table = ArcTable::new(c, ACCURACY);
     let p = table.total();
     if !(p.is_finite() && p > 0.0) {
         return None;
     }
-    let pts: Vec<Point> = (0..SAMPLES).map(|j| table.point_at(p * j as f64 / SAMPLES as f64)).collect();
-    let sense = if c.signed_area() >= 0.0 { 1.0 } else { -1.0 };
+    let pts = (0..SAMPLES).map(|k| table.point_at(p * k as f64 / SAMPLES as f64)).collect();
+    Some((table, p, pts, if c.signed_area() >= 0.0 { 1.0 } else { -1.0 }))
+}
+
+/// `c` as a circle (a [`Symmetry`] of `order` 0), or `None` when it is none (see the module
+/// docs). Never panics: a degenerate or non-finite outline is no circle.
+pub fn circle(c: &Contour) -> Option<Symmetry> {
+    let (_, p, pts, sense) = samples(c)?;
+    // Equally spaced in arc length on a circle, the samples' mean is its centre.
+    let n = SAMPLES as f64;
+    let centre = Point::new(pts.iter().map(|q| q.x).sum::<f64>() / n, pts.iter().map(|q| q.y).sum::<f64>() / n);
+    let r = p / TAU;
+    let start = (pts[0] - centre).atan2();
+    let round = pts.iter().enumerate().all(|(k, q)| {
+        let a = start + sense * TAU * k as f64 / n;
+        let want = Point::new(centre.x + r * a.cos(), centre.y + r * a.sin());
+        q.distance(want) <= TOLERANCE * r
+    });
+    (round && centre.x.is_finite() && centre.y.is_finite()).then_some(Symmetry { centre, perimeter: p, order: 0 })
+}
+
+/// The finite turn symmetry of `c` ([`Symmetry`]): the largest order `k` up to [`MAX_ORDER`]
+/// for which the point `P/k` further along `c` from each of [`SAMPLES`] points equally spaced
+/// in arc length is that point turned by `2π/k` (the sense `c` runs) about one centre, within
+/// [`EXACT`] of `P/2π`. The centre is the least-squares one, `(I − R)⁻¹ · mean(q − R p)` for
+/// the turn `R`, exact for a symmetric outline. `None` when `c` has none (a circle is asked
+/// of [`circle`]). Never panics.
+pub fn order(c: &Contour) -> Option<Symmetry> {
+    let (table, p, pts, sense) = samples(c)?;
     let tolerance = EXACT * p / TAU;
     (2..=MAX_ORDER).rev().find_map(|k| {
         let step = p / k as f64;
@@ -168,7 +156,7 @@ pub fn symmetry(c: &Contour, finite: bool) -> Option<Symmetry> {
 /// ([`Symmetry`]): that piece's flat coordinates are turned by `angle` about `centre`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Turn {
-    /// 0 when A is the circle, 1 when B is.
+    /// The piece turned: 0 for A (a circle), 1 for B.
     pub piece: u8,
     pub centre: Point,
     /// Radians, counter-clockwise.
@@ -234,13 +222,12 @@ impl Turn {
     }
 }
 
-/// The piece of the pair to turn, with its symmetry ([`symmetry`]): a circle, B's first; else
-/// B when a turn of finite order carries it onto itself. (Not A: turning A moves the seam's
-/// start off its first anchor, which only a circle, whose offset is no choice at all, is
+/// The piece of the pair to turn, with its symmetry: a circle ([`circle`]), B's first; else B
+/// when a turn of finite order carries it onto itself ([`order`]). (Not A: turning A moves the
+/// seam's start off its first anchor, which only a circle, whose offset is no choice at all, is
 /// allowed.)
 pub fn round_piece(a: &Contour, b: &Contour) -> Option<(u8, Symmetry)> {
-    let circle = |c: &Contour| symmetry(c, false);
-    circle(b).map(|s| (1, s)).or_else(|| circle(a).map(|s| (0, s))).or_else(|| symmetry(b, true).map(|s| (1, s)))
+    circle(b).map(|s| (1, s)).or_else(|| circle(a).map(|s| (0, s))).or_else(|| order(b).map(|s| (1, s)))
 }
 
 #[cfg(test)]
@@ -284,7 +271,7 @@ mod tests {
             assert!((got.perimeter / (TAU * r) - 1.0).abs() < 1e-12, "{what}: perimeter {}", got.perimeter);
         }
         let mut pulled = four.knots().to_vec();
-        pulled[1].right = pulled[1].right + kurbo::Vec2::new(0.5, 0.0);
+        pulled[1].right += kurbo::Vec2::new(0.5, 0.0);
         let square = Contour::new([(0.0, 0.0), (5.0, 0.0), (5.0, 5.0), (0.0, 5.0)].map(|(x, y)| Knot::corner(Point::new(x, y))).to_vec(), 1).unwrap();
         for (what, c) in [("ellipse 1.002:1", ellipse(50.1, 50.0, 4)), ("ellipse 1:1.002", ellipse(50.0, 50.1, 8)), ("pulled handle", Contour::new(pulled, 1).unwrap()), ("square", square)] {
             assert_eq!(circle(&c), None, "{what}: wanted no circle");
@@ -320,10 +307,10 @@ mod tests {
         let hexagon = Contour::new((0..6).map(|k| { let t = TAU * k as f64 / 6.0; Knot::corner(Point::new(40.0 * t.cos(), 40.0 * t.sin())) }).collect(), 0).unwrap();
         for (what, c, order) in [("ellipse", ellipse(60.0, 25.0, 8), 2), ("hexagon", hexagon, 6), ("five lobes", flower(0.0), 5)] {
             let c = c.transformed(moved);
-            let s = symmetry(&c, true).unwrap_or_else(|| panic!("{what}: wanted order {order}, got none"));
+            let s = super::order(&c).unwrap_or_else(|| panic!("{what}: wanted order {order}, got none"));
             assert_eq!(s.order, order, "{what}");
             assert!(s.centre.distance(Point::new(31.0, -17.5)) < 1e-6, "{what}: centre {:?}", s.centre);
-            assert_eq!(symmetry(&c, false), None, "{what}: no circle");
+            assert_eq!(circle(&c), None, "{what}: no circle");
             let table = ArcTable::new(&c, 1e-12);
             let p = table.total();
             let offset = (order as f64 - 0.7) * p / order as f64;
@@ -338,7 +325,7 @@ mod tests {
         }
         let egg = Contour::new((0..40).map(|k| { let t = TAU * k as f64 / 40.0; Knot::corner(Point::new(50.0 * t.cos() * (1.0 + 0.1 * t.cos()), 40.0 * t.sin())) }).collect(), 0).unwrap();
         for (what, c) in [("ellipse of five arcs", ellipse(60.0, 25.0, 5)), ("flower with one lobe larger", flower(0.01)), ("egg", egg)] {
-            assert_eq!(symmetry(&c, true), None, "{what}: wanted no symmetry");
+            assert_eq!(order(&c), None, "{what}: wanted no symmetry");
         }
     }
 
