@@ -240,7 +240,8 @@ fn test_issue_14_organic_pieces_with_a_circle_or_an_ellipse_converge() {
 /// steps across (coarser at 128, so stiffer) and the homotopy's sheet thinner.
 ///
 /// Not yet for the five lobes (issue 14 stays open on it): their sheet has many equilibria, and
-/// each mesh ends in its own. Over eight draws of the meshes (the same drawing solved at eight
+/// each mesh ends in its own (the circle bends in five ridges whose width is the mesh's, see
+/// `dformer::simulate::sheet`, "Where the five lobes' answer is held"). Over eight draws of the meshes (the same drawing solved at eight
 /// frame sizes, [`dformer::simulate::frame`]) their volumes at 128 and 256 were 0.05–2.0 % apart
 /// (1.5 % at the frame size the solver uses), the Pebble's 0.0–0.3 % and the blob's 0.1–1.3 %
 /// (1.3 % on one draw). Before the frames were scaled the tests saw one draw, the drawing's own

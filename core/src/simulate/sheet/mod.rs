@@ -77,6 +77,23 @@
 //! along the rulings, or strain measured on a coarser set than the bending), not a finer mesh:
 //! at 3 steps the five lobes' mesh has 2,261 vertices against 1,267.
 //!
+//! *Where the five lobes' answer is held (stop 45, 256 seam vertices, native).* Their piece is
+//! ruled as a developable sheet must be: its chords of 3–5 interior edges between seam samples
+//! are straight in 3D to 5e-5–4e-4 of their length, and it bends by at most 14° across an edge.
+//! The circle is not: its middle is flat (bends of 0.1–0.4°), and its bending is packed into
+//! five ridges, one per lobe (its edges bent by over 20° lie in five sectors of about 50°, with
+//! none between), at 40–80 % of its radius: 7–10° across an edge on average there, up to 52–57°
+//! (two draws). No chord of it longer than three interior edges is straighter than 2.8e-3 of its
+//! length, three times the sheet's largest strain. Likely a thin sheet's ridge, which narrows
+//! with the thickness (Lobkovsky, "Boundary layer analysis of the ridge singularity in a thin
+//! plate", PRE 53, 1996): at the thin limit its width is the mesh's, and the volume follows how
+//! each mesh resolves it. Over eight draws of the meshes ([`crate::simulate::frame`] sizes
+//! 90–160) the volumes at 128, 192 and 256 seam vertices spread by 0.7–4.2 %; with the circle's
+//! interior triangles half as long (four times as many) by 0.4–3.0 %; refined beside every edge
+//! of the answer bent by more than 10° or 20° ([`adapt::bent_centroids`]) and thinned again from
+//! 1e-5, by 0.9–3.6 % and 0.9–5.7 %; with 28 of the lobes' straight chords kept as lines of
+//! vertices (a mesh along their rulings) and thinned again, by 0.3–4.1 %. None was kept.
+//!
 //! *Saddles.* Where a concave stretch of one piece meets the other, the seam carries negative
 //! curvature, and each piece's fan at a seam sample must bend along an edge into the piece. The
 //! thinning's mesh has short rows of vertices there ([`saddle`]); without them two organic
