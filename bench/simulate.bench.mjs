@@ -166,6 +166,10 @@ for (const [name, a, b, share] of nonConvex) {
   const s = r.stats;
   console.log(`== ${name} (WASM, non-convex, 256 seam vertices) ==`);
   console.log(`  time ${ms.toFixed(1)} ms median of 3 (${again[0].toFixed(0)}–${again[2].toFixed(0)}; first solve ${first.toFixed(0)} ms) (≤ 1000 ms) ${mark(ms <= 1000)}   converged ${s.converged} ${mark(s.converged)}   max strain ${s.maxStrain.toExponential(2)} sharpest bend inside a piece ${maxBend(r.vertices, r.triangles, r.piece).toFixed(0)}° (≤ 90, from the mesh) iterations ${s.iterations}${s.converged ? '' : `   shortfall ${s.shortfall}`}`);
+  // Issue 14's requirement 3, resolution independence: the same pair at half the seam vertices.
+  const half = m.simulate(pieces, { offset, resolution: 128 }).stats;
+  const apart = Math.abs(half.volume - s.volume) / s.volume;
+  console.log(`  volume ${s.volume.toFixed(0)} at 256 seam vertices, ${half.volume.toFixed(0)} at 128: ${(100 * apart).toFixed(2)} % apart (≤ 1 %) ${mark(apart <= 1e-2)}${half.converged ? '' : `   at 128 converged false, shortfall ${half.shortfall}`}`);
   const floor = samplingFloor(r);
   console.log(`  sampling floor: no mesh on these seam samples gets below max edge strain ${floor.toExponential(2)} (≤ 1e-3 needed) ${mark(floor <= 1e-3)}${floor > 1e-3 ? ' — the samples, not the solver, rule out a converged answer' : ''}`);
 }
