@@ -148,6 +148,54 @@ fn test_issue_14_a_circle_glued_to_a_shape_has_one_form_at_every_offset() {
     }
 }
 
+/// Regression (issue 14): a circle's mesh turned on how it was drawn. The kidney with a circle
+/// of four Bézier arcs (the ellipse tools') and with one of eight, the same circle within 2.7e-4
+/// of its radius, were 3.1 % apart in volume (243,597 and 251,312 mm³), and a circle drawn from
+/// another start, or moved, or the other way round drew yet another mesh. Now every circle is
+/// solved as one canonical circle of the kidney's perimeter and placed back on the drawn one:
+/// four, eight or sixteen arcs, turned and moved, give the eight arcs' mesh and form to the last
+/// bit, and one drawn clockwise, the mirror image of its mesh (volume within 0.1 %). Each
+/// circle's flat seam points lie on its own drawn outline, and each seam vertex glues the
+/// kidney's point at arc length `t` to the drawn circle's at `t` (clockwise from its first
+/// anchor), within 5e-4 of the radius, the roundness a circle is taken at.
+#[test]
+fn test_issue_14_a_circle_drawn_any_way_gives_one_form() {
+    let a = shapes::kidney();
+    let p = shapes::perimeter(&a);
+    let r = p / TAU;
+    let eight = shapes::circle_for(&a);
+    let base = run(&a, &eight, 0.0);
+    let moved = Affine::translate((250.0, -40.0)) * Affine::rotate(1.0);
+    for (what, b, same_bits) in [
+        ("four arcs", shapes::with_perimeter(&shapes::circle(1.0, 4), p), true),
+        ("sixteen arcs", shapes::with_perimeter(&shapes::circle(1.0, 16), p), true),
+        ("eight arcs turned by a radian and moved", eight.transformed(moved), true),
+        ("four arcs drawn clockwise", shapes::with_perimeter(&shapes::circle(1.0, 4).reversed(), p), false),
+    ] {
+        let got = run(&a, &b, 0.0);
+        assert!(got.stats.offset_free, "{what}: wanted offset_free");
+        let (v0, v) = (volume(&base), volume(&got));
+        if same_bits {
+            assert_eq!(got.vertices, base.vertices, "{what}: wanted the eight arcs' vertices");
+            assert_eq!(v.to_bits(), v0.to_bits(), "{what}: wanted the eight arcs' volume {v0}, got {v}");
+        } else {
+            assert!((v - v0).abs() <= 1e-3 * v0, "{what}: volume {v}, with eight arcs {v0}");
+        }
+        assert_eq!(got.stats.converged, base.stats.converged, "{what}: wanted the eight arcs' verdict");
+        assert!((max_edge_strain(&got) - max_edge_strain(&base)).abs() <= 1e-5, "{what}: edge strain from flat changed");
+        let (on_a, on_b) = (seam_flat(&got, 0), seam_flat(&got, 1));
+        let (mut off, mut worst) = (0.0f64, 0.0f64);
+        for (qa, qb) in on_a.iter().zip(&on_b).step_by(4) {
+            off = off.max(arc_of(&b, *qb).1);
+            let want = clockwise_at(&b, arc_of(&a, *qa).0);
+            worst = worst.max((qb[0] - want.x).hypot(qb[1] - want.y));
+        }
+        println!("{what}: volume {v:.0} (eight arcs {v0:.0}); flat seam off the drawn circle by {:.1e} r, gluing by {:.1e} r", off / r, worst / r);
+        assert!(off <= 5e-4 * r, "{what}: a flat seam point lies {off:.2e} off the drawn circle");
+        assert!(worst <= 5e-4 * r, "{what}: a seam vertex glues points {worst:.2e} from the drawn circle's pairing");
+    }
+}
+
 /// An ellipse 1 % out of round is no circle: its forms at two offsets are solved as they are
 /// (other vertices), and `offset_free` stays false; so does it for a convex pair with a circle,
 /// whose exact polyhedron the convex path finds at every offset.

@@ -187,9 +187,20 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     // solved at its remainder (on the frame's cell, the bits of that offset given directly).
     let symmetry = if convex { None } else { round::round_piece(&a, &b) };
     let turn = symmetry.and_then(|(piece, s)| round::Turn::new(piece, s, options.offset));
-    let glue = match turn {
-        Some((_, at)) => seam::Glue::new(&a, &b, fb.snap(at))?,
-        None => glue,
+    // A circle is solved as one canonical circle of the other piece's perimeter, however it was
+    // drawn (its arcs, first anchor, sense), and placed back on the drawn one ([`round::Canonical`]).
+    let canonical = match symmetry {
+        Some((0, s)) if s.order == 0 => round::Canonical::new(0, s, &a, &b),
+        Some((1, s)) if s.order == 0 => round::Canonical::new(1, s, &b, &a),
+        _ => None,
+    };
+    let glue = match (&canonical, turn) {
+        (Some((c, circle)), _) => {
+            let (ga, gb) = if c.piece == 0 { (circle, &b) } else { (&a, circle) };
+            seam::Glue::new(ga, gb, 0.0)?
+        }
+        (None, Some((_, at))) => seam::Glue::new(&a, &b, fb.snap(at))?,
+        (None, None) => glue,
     };
     // A pair with a non-convex piece: the convex path gives the sheet path its start (or, when
     // it meets every promise, e.g. the flat doubly covered sheet, the answer) on a short budget.
@@ -249,6 +260,9 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         }
     }
     stats::judge(&mut sim, !convex);
+    if let Some((c, _)) = &canonical {
+        c.place(&mut sim);
+    }
     if let Some((turn, _)) = turn {
         turn.turn(&mut sim, a.knots()[0].anchor);
     }

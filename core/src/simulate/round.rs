@@ -36,6 +36,10 @@
 //! `stats.offset_free` stays false. (A kidney with a 2:1 ellipse of 96 points already gave the
 //! same form half a perimeter on: its samples fell on the same places.)
 //!
+//! *One circle.* A circle is solved as the same canonical circle however it was drawn (its
+//! arcs, first anchor, place), and its answer placed back on the drawn one ([`Canonical`]): a
+//! circle of four Bézier arcs and one of eight gave the kidney forms 3.1 % apart.
+//!
 //! A circle here is an outline within [`TOLERANCE`] of its radius from a circle of the same
 //! perimeter, traversed at the circle's speed (checked at [`SAMPLES`] points equally spaced in
 //! arc length, each against the circle's point at the same arc length). A circle drawn with
@@ -222,6 +226,94 @@ impl Turn {
     }
 }
 
+/// Bézier arcs of the circle a round piece is solved as ([`Canonical`]): 4.2e-6 of the radius
+/// off a true circle, so a hundred times closer than any drawn circle this module accepts.
+pub const CANONICAL_ARCS: usize = 8;
+
+/// A round piece solved as one circle whatever way it was drawn.
+///
+/// The sheet path's mesh of a circle turns on its samples' last bits ([`super::sheet`], "the
+/// mesh decides among nearby answers"), and so did the form: the kidney with a circle of four
+/// Bézier arcs (Illustrator's and Inkscape's ellipse tools) and with one of eight, the same
+/// circle within 2.7e-4 of its radius, were 3.1 % apart in volume (243,597 and 251,312 mm³, 256
+/// seam vertices), and a circle drawn from another start point or the other way round drew yet
+/// another mesh. So the piece is solved as [`canonical`]: [`CANONICAL_ARCS`] arcs, its first
+/// anchor at the origin of its frame, its centre at `(−r, 0)`, the sense it was drawn in, and
+/// the other piece's perimeter (which the pair's must equal): a function of the other piece
+/// alone. Its flat corners are then placed on the drawn circle by the rigid motion that takes
+/// the canonical centre to the drawn one and its first anchor to the drawn first anchor's
+/// direction ([`Canonical::place`]); they lie within the drawn circle's roundness of its outline,
+/// as a turned circle's do ([`Turn`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Canonical {
+    /// The round piece: 0 for A, 1 for B.
+    pub piece: u8,
+    /// The canonical circle's centre, and the drawn one's, in the piece's frame.
+    pub from: Point,
+    pub to: Point,
+    /// Radians, counter-clockwise: the drawn first anchor's direction from the drawn centre.
+    pub angle: f64,
+}
+
+/// The circle of perimeter `perimeter` by [`CANONICAL_ARCS`] Bézier arcs, first anchor at the
+/// origin, centre at `(−r, 0)`, counter-clockwise unless `clockwise`, with its radius `r`; `None`
+/// for a perimeter that is not positive and finite. Its perimeter is `perimeter` to the
+/// arc-length table's accuracy.
+pub fn canonical(perimeter: f64, clockwise: bool, piece: usize) -> Option<(Contour, f64)> {
+    if !(perimeter.is_finite() && perimeter > 0.0) {
+        return None;
+    }
+    let m = CANONICAL_ARCS;
+    let h = 4.0 / 3.0 * (TAU / (4.0 * m as f64)).tan();
+    let knots = |r: f64| -> Vec<crate::contour::Knot> {
+        (0..m)
+            .map(|k| {
+                let t = TAU * k as f64 / m as f64;
+                let (c, s) = (t.cos(), t.sin());
+                let y = if clockwise { -1.0 } else { 1.0 };
+                let at = |x: f64, v: f64| Point::new(r * x - r, y * r * v);
+                crate::contour::Knot { anchor: at(c, s), left: at(c + h * s, s - h * c), right: at(c - h * s, s + h * c) }
+            })
+            .collect()
+    };
+    let unit = Contour::new(knots(1.0), piece).ok()?;
+    let r = perimeter / ArcTable::new(&unit, ACCURACY).total();
+    if !(r.is_finite() && r > 0.0) {
+        return None;
+    }
+    Contour::new(knots(r), piece).ok().map(|c| (c, r))
+}
+
+impl Canonical {
+    /// For the round piece `piece` of the pair (`drawn`, in its frame, with its circle `s`) and
+    /// the other piece `other`: the canonical circle to solve it as ([`canonical`]) and how its
+    /// answer goes back onto the drawn circle. `None` when either cannot be built.
+    pub fn new(piece: u8, s: Symmetry, drawn: &Contour, other: &Contour) -> Option<(Canonical, Contour)> {
+        let perimeter = ArcTable::new(other, ACCURACY).total();
+        let (circle, r) = canonical(perimeter, drawn.signed_area() < 0.0, piece as usize)?;
+        let start = drawn.knots().first()?.anchor;
+        let angle = (start - s.centre).atan2();
+        angle.is_finite().then_some((Canonical { piece, from: Point::new(-r, 0.0), to: s.centre, angle }, circle))
+    }
+
+    /// `q` on the canonical circle's flat piece, placed on the drawn one's.
+    pub fn apply(&self, q: [f64; 2]) -> [f64; 2] {
+        let (s, c) = self.angle.sin_cos();
+        let (x, y) = (q[0] - self.from.x, q[1] - self.from.y);
+        [self.to.x + c * x - s * y, self.to.y + s * x + c * y]
+    }
+
+    /// Places the round piece's flat corners of `sim` (solved on the canonical circle) on the
+    /// drawn circle.
+    pub fn place(&self, sim: &mut Simulation) {
+        for (corners, &p) in sim.flat.iter_mut().zip(&sim.piece) {
+            if p == self.piece {
+                *corners = corners.map(|q| self.apply(q));
+            }
+        }
+    }
+}
+
 /// The piece of the pair to turn, with its symmetry: a circle ([`circle`]), B's first; else B
 /// when a turn of finite order carries it onto itself ([`order`]). (Not A: turning A moves the
 /// seam's start off its first anchor, which only a circle, whose offset is no choice at all, is
@@ -369,5 +461,45 @@ mod tests {
         assert_eq!(round_piece(&a, &a).map(|(p, s)| (p, s.order)), Some((1, 2)), "two ellipses: B's order 2, not A's");
         let scalene = Contour::new([(0.0, 0.0), (7.0, 0.0), (2.0, 5.0)].map(|(x, y)| Knot::corner(Point::new(x, y))).to_vec(), 0).unwrap();
         assert_eq!(round_piece(&a, &scalene), None, "A's symmetry alone is not used");
+    }
+
+    /// The canonical circle has the perimeter asked for (to 1e-12), its first anchor at the
+    /// origin and its centre at (−r, 0), in either sense; placed on a drawn circle of four arcs
+    /// (moved, started at another angle, either sense), its point at arc length `t` from its
+    /// start lands on the drawn circle's point at `t` (the same way round) within the drawn
+    /// circle's roundness. Non-finite or zero perimeters give none.
+    #[test]
+    fn the_canonical_circle_is_placed_on_the_drawn_one() {
+        for clockwise in [false, true] {
+            let (c, r) = canonical(123.0, clockwise, 1).expect("a circle");
+            let table = ArcTable::new(&c, 1e-12);
+            assert!((table.total() - 123.0).abs() <= 1e-12 * 123.0, "perimeter {}", table.total());
+            assert_eq!(c.knots()[0].anchor, Point::ZERO, "first anchor at the origin");
+            assert_eq!(c.signed_area() < 0.0, clockwise, "the sense asked for");
+            for k in 0..16 {
+                let q = table.point_at(123.0 * k as f64 / 16.0);
+                let off = (q.distance(Point::new(-r, 0.0)) - r).abs();
+                assert!(off <= 5e-6 * r, "clockwise {clockwise}: point {k} off the circle about (−r, 0) by {off:.2e}");
+            }
+        }
+        let moved = Affine::translate((30.0, -7.0)) * Affine::rotate(2.0);
+        for drawn in [ellipse(20.0, 20.0, 4).transformed(moved), ellipse(20.0, 20.0, 4).reversed().transformed(moved)] {
+            let e = ellipse(40.0, 10.0, 8);
+            let other = e.transformed(Affine::scale(ArcTable::new(&drawn, 1e-12).total() / ArcTable::new(&e, 1e-12).total()));
+            let s = circle(&drawn).expect("a circle");
+            let (place, c) = Canonical::new(1, s, &drawn, &other).expect("canonical");
+            let (ct, dt) = (ArcTable::new(&c, 1e-12), ArcTable::new(&drawn, 1e-12));
+            assert!((ct.total() - ArcTable::new(&other, 1e-12).total()).abs() <= 1e-9, "the other piece's perimeter");
+            for k in 0..8 {
+                let t = dt.total() * k as f64 / 8.0;
+                let q = ct.point_at(t);
+                let got = place.apply([q.x, q.y]);
+                let d = Point::new(got[0], got[1]).distance(dt.point_at(t));
+                assert!(d <= 2.0 * TOLERANCE * 20.0, "t {t:.3}: placed {got:?}, drawn {:?} ({d:.2e} off)", dt.point_at(t));
+            }
+        }
+        assert_eq!(canonical(f64::NAN, false, 0).map(|c| c.1), None);
+        assert_eq!(canonical(0.0, false, 0).map(|c| c.1), None);
+        assert_eq!(canonical(f64::INFINITY, false, 0).map(|c| c.1), None);
     }
 }
