@@ -615,6 +615,44 @@ fn test_issue_14_a_pair_moved_on_the_artboard_keeps_its_form() {
     }
 }
 
+/// Regression (stop 45): the same pair turned on the artboard got another form. The frames
+/// moved and scaled each piece but did not turn it, so a turned piece had other bits, other
+/// meshes and another equilibrium: with both pieces turned by 0, 0.3, 1 and 2.5 radians the L
+/// with a circle had 76,473–86,538 mm³, the heart drawn with corners with its copy at 3/16 of
+/// the perimeter 99,767–110,725 and the rounded star with its copy 44,926–61,464 (256 seam
+/// vertices, native). Each piece is now also turned in its frame ([`dformer::simulate::frame`]):
+/// each piece turned and moved its own way gives the same mesh, the same 3D vertices and volume,
+/// and `flat` turned and moved with its piece.
+#[test]
+fn test_issue_14_a_pair_turned_on_the_artboard_keeps_its_form() {
+    use kurbo::{Affine, Point};
+    let (ta, tb) = (Affine::translate((40.0, -7.5)) * Affine::rotate(0.3), Affine::translate((-300.0, 12.0)) * Affine::rotate(2.5));
+    for (name, a, b, share) in [
+        ("L hexagon + circle", shapes::l_shape(), shapes::circle_for(&shapes::l_shape()), 0.0),
+        ("drawn heart + copy", shapes::drawn_heart(), shapes::drawn_heart(), 3.0 / 16.0),
+        ("rounded star + copy", shapes::rounded_star(), shapes::rounded_star(), 3.0 / 16.0),
+    ] {
+        let offset = share * shapes::perimeter(&a);
+        let here = run(&a, &b, offset, 256, 5000);
+        let there = run(&a.transformed(ta), &b.transformed(tb), offset, 256, 5000);
+        assert_eq!(here.triangles, there.triangles, "{name}: wanted the same mesh");
+        assert_eq!(here.stats.converged, there.stats.converged, "{name}: wanted the same verdict");
+        let size = here.vertices.iter().map(|p| norm(*p)).fold(0.0, f64::max);
+        let moved = here.vertices.iter().zip(&there.vertices).map(|(p, q)| norm(sub(*p, *q))).fold(0.0, f64::max);
+        assert!(moved <= 1e-9 * size, "{name}: wanted the same 3D vertices, one moved by {moved:e} (size {size:.1})");
+        let (v0, v1) = (volume(&here), volume(&there));
+        assert!((v1 / v0 - 1.0).abs() <= 1e-9, "{name}: wanted the volume {v0:.6e}, got {v1:.6e}");
+        for (t, (f, g)) in here.flat.iter().zip(&there.flat).enumerate() {
+            let m = if here.piece[t] == 0 { ta } else { tb };
+            for (p, q) in f.iter().zip(g) {
+                let want = m * Point::new(p[0], p[1]);
+                let off = (q[0] - want.x).abs().max((q[1] - want.y).abs());
+                assert!(off <= 1e-9 * size, "{name}: triangle {t}'s flat corner is {off:e} from its piece's turn and move");
+            }
+        }
+    }
+}
+
 /// Regression (stop 43): the same drawing in other units got another form. Its pieces were
 /// moved to their first anchors but not scaled, so a drawing read in points (Illustrator's
 /// unit) rather than millimetres had other bits, other meshes and another equilibrium: the

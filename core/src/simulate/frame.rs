@@ -1,6 +1,7 @@
-//! Both pieces in frames of their own: each moved so that its first anchor is the origin, both
-//! scaled by one unit so that the first piece measures [`SIZE`] across, and every control point
-//! snapped to a binary grid of about 2⁻³⁰ of its piece's size.
+//! Both pieces in frames of their own: each moved so that its first anchor is the origin and
+//! turned so that the mean of its control points lies on the positive x axis ([`turn_of`]),
+//! both scaled by one unit so that the first piece, so turned, measures [`SIZE`] across, and
+//! every control point snapped to a binary grid of about 2⁻³⁰ of its piece's size.
 //!
 //! Why: the sheet path's answer is a deterministic function of the input's bits, and it turns
 //! on them. Its meshes come from Delaunay refinement, whose exact in-circle tests decide on a
@@ -12,10 +13,14 @@
 //! points, inches, CSS pixels, ×0.01, ×100, ×0.3) the kidney with a circle spread by 1.7 % in
 //! volume, the five lobes by 2.0 %, the heart drawn with corners by 6.2 % and the L by 6.6 %,
 //! so a drawing read in points (the panel) and in millimetres (an Inkscape document) gave forms
-//! a few percent apart.
+//! a few percent apart. And the same drawing turned on the artboard (both pieces by 0.3, 1 and
+//! 2.5 radians; stop 45): the L with a circle spread by 13 % (76,473–86,538 mm³), the heart
+//! drawn with corners with its copy at 3/16 by 11 %, the rounded star with its copy at 3/16 by
+//! 37 %, the five lobes with a circle by 1.9 %; each piece is a flat sheet, and how it lies on
+//! the artboard is no part of the form.
 //!
-//! In the frames the drawing and its moved or scaled copy differ only by the rounding of
-//! `(p − origin) / unit`, a few units in the last place of [`SIZE`], and the snap takes both to
+//! In the frames the drawing and its moved, turned or scaled copy differ only by the rounding of
+//! `R(−φ)(p − origin) / unit`, a few units in the last place of [`SIZE`], and the snap takes both to
 //! the same grid point unless one lies within that of a grid point's midway line: the odds are
 //! ~1e-6 per coordinate. The offset along the seam is reduced by the input's perimeter and
 //! scaled and snapped the same way ([`offset`]). The snap moves a point by at most half a
@@ -57,15 +62,20 @@ pub struct Frame {
     pub origin: Point,
     pub unit: f64,
     pub cell: f64,
+    /// The frame's turn against the input: `(cos, sin)` of the angle by which a frame point is
+    /// turned back into the input ([`Frame::to_input`], [`turn_of`]).
+    pub turn: (f64, f64),
 }
 
 impl Frame {
     /// The frame of an outline kept as it is.
-    const INPUT: Frame = Frame { origin: Point::ZERO, unit: 1.0, cell: 0.0 };
+    const INPUT: Frame = Frame { origin: Point::ZERO, unit: 1.0, cell: 0.0, turn: (1.0, 0.0) };
 
     /// A point of the piece's frame in the input's coordinates.
     pub fn to_input(&self, p: [f64; 2]) -> [f64; 2] {
-        [p[0] * self.unit + self.origin.x, p[1] * self.unit + self.origin.y]
+        let (c, s) = self.turn;
+        let (x, y) = (c * p[0] - s * p[1], s * p[0] + c * p[1]);
+        [x * self.unit + self.origin.x, y * self.unit + self.origin.y]
     }
 
     /// A length of the frame (an arc length, a distance) in the input's units.
@@ -120,10 +130,15 @@ fn size(c: &Contour) -> f64 {
 /// that is no valid contour or has no size.
 fn local(c: &Contour, unit: f64, piece: usize) -> Option<(Contour, Frame)> {
     let origin = c.knots().first()?.anchor;
-    // `(p − origin) / unit` by hand rather than `Contour::transformed`, whose affine map would
-    // round `p · (1/unit) + (−origin · (1/unit))` instead: here one subtraction and one
-    // division, the rounding the module docs count.
-    let scale = |p: Point| Point::new((p.x - origin.x) / unit, (p.y - origin.y) / unit);
+    let turn = turn_of(c);
+    // `R(−φ)(p − origin) / unit` by hand rather than `Contour::transformed`, whose affine map
+    // would round `p · (1/unit) + (−origin · (1/unit))` instead: here one subtraction, one turn
+    // and one division, the rounding the module docs count.
+    let (tc, ts) = turn;
+    let scale = |p: Point| {
+        let (x, y) = (p.x - origin.x, p.y - origin.y);
+        Point::new((tc * x + ts * y) / unit, (tc * y - ts * x) / unit)
+    };
     let scaled = Contour::new(c.knots().iter().map(|k| Knot { anchor: scale(k.anchor), left: scale(k.left), right: scale(k.right) }).collect(), piece).ok()?;
     let size = size(&scaled);
     if !(size.is_finite() && size > 0.0) {
@@ -135,7 +150,45 @@ fn local(c: &Contour, unit: f64, piece: usize) -> Option<(Contour, Frame)> {
     }
     let snap = |p: Point| Point::new((p.x / cell).round() * cell, (p.y / cell).round() * cell);
     let knots = scaled.knots().iter().map(|k| Knot { anchor: snap(k.anchor), left: snap(k.left), right: snap(k.right) }).collect();
-    Some((Contour::new(knots, piece).ok()?, Frame { origin, unit, cell }))
+    Some((Contour::new(knots, piece).ok()?, Frame { origin, unit, cell, turn }))
+}
+
+/// How far `c` is turned: `(cos φ, sin φ)` of the direction `φ` from its first anchor to the
+/// mean of its control points (anchors and handles), which turns with the outline; its frame
+/// turns it back by `φ`, so that the same outline drawn turned gets the same frame coordinates
+/// (to the snap). `(1, 0)` when that direction is not defined to well above round-off (the mean
+/// within 1e-6 of the outline's size of the first anchor).
+pub fn turn_of(c: &Contour) -> (f64, f64) {
+    let Some(first) = c.knots().first() else { return (1.0, 0.0) };
+    let n = 3.0 * c.knots().len() as f64;
+    let (mut x, mut y) = (0.0, 0.0);
+    for k in c.knots() {
+        for p in [k.anchor, k.left, k.right] {
+            x += (p.x - first.anchor.x) / n;
+            y += (p.y - first.anchor.y) / n;
+        }
+    }
+    let len = x.hypot(y);
+    if !(len.is_finite() && len > 1e-6 * size(c)) {
+        return (1.0, 0.0);
+    }
+    (x / len, y / len)
+}
+
+/// [`size`] of `c` turned back by [`turn_of`] about its first anchor: the size of the outline
+/// as its frame holds it, the same for the outline drawn turned.
+fn turned_size(c: &Contour) -> f64 {
+    let Some(first) = c.knots().first() else { return f64::NAN };
+    let (tc, ts) = turn_of(c);
+    let o = first.anchor;
+    let turn = |p: Point| {
+        let (x, y) = (p.x - o.x, p.y - o.y);
+        Point::new(tc * x + ts * y, tc * y - ts * x)
+    };
+    match Contour::new(c.knots().iter().map(|k| Knot { anchor: turn(k.anchor), left: turn(k.left), right: turn(k.right) }).collect(), 0) {
+        Ok(t) => size(&t),
+        Err(_) => f64::NAN,
+    }
 }
 
 /// `a` and `b` in their frames (see the module docs), with the frames. When either cannot be
@@ -144,7 +197,7 @@ fn local(c: &Contour, unit: f64, piece: usize) -> Option<(Contour, Frame)> {
 /// give their own messages on them.
 pub fn pair(a: &Contour, b: &Contour) -> ((Contour, Frame), (Contour, Frame)) {
     let keep = ((a.clone(), Frame::INPUT), (b.clone(), Frame::INPUT));
-    let unit = size(a) / SIZE;
+    let unit = turned_size(a) / SIZE;
     if !(unit.is_normal() && unit.is_finite()) {
         return keep;
     }
@@ -172,8 +225,8 @@ mod tests {
         Contour::new(knots, 0).unwrap()
     }
 
-    /// A drawing and its copies moved across the artboard or drawn in other units (points,
-    /// inches, metres) get the very same bits in their frames, each frame's origin is the copy's
+    /// A drawing and its copies moved across the artboard, turned, or drawn in other units
+    /// (points, inches, metres) get the very same bits in their frames, each frame's origin is the copy's
     /// first anchor, its unit scales with the copy, and no point moved by more than half a cell.
     #[test]
     fn moved_and_scaled_copies_get_the_same_bits_in_their_frames() {
@@ -194,14 +247,14 @@ mod tests {
             }
         }
         let offset = 37.123_456_789;
-        for (dx, dy, k) in [(37.3, -11.7, 1.0), (250.1, 400.9, 1.0), (-1000.3, 3.3, 1.0), (1e-7, 0.0, 1.0), (0.0, 0.0, 72.0 / 25.4), (12.5, -3.0, 1.0 / 25.4), (0.0, 0.0, 0.001), (-7.0, 2.0, 96.0 / 25.4), (0.0, 0.0, 100.0)] {
-            let m = Affine::translate((dx, dy)) * Affine::scale(k);
+        for (dx, dy, k, turn) in [(37.3, -11.7, 1.0, 0.0), (250.1, 400.9, 1.0, 0.0), (-1000.3, 3.3, 1.0, 0.0), (1e-7, 0.0, 1.0, 0.0), (0.0, 0.0, 72.0 / 25.4, 0.0), (12.5, -3.0, 1.0 / 25.4, 0.0), (0.0, 0.0, 0.001, 0.0), (-7.0, 2.0, 96.0 / 25.4, 0.0), (0.0, 0.0, 100.0, 0.0), (0.0, 0.0, 1.0, 0.3), (40.0, -3.0, 1.0, 2.5), (0.0, 0.0, 72.0 / 25.4, -1.0), (5.5, 1.5, 1.0, std::f64::consts::PI)] {
+            let m = Affine::translate((dx, dy)) * Affine::rotate(turn) * Affine::scale(k);
             let ((ma, ga), (mb, gb)) = pair(&a.transformed(m), &b.transformed(m));
             for (base, moved) in [(&base_a, &ma), (&base_b, &mb)] {
                 let diff = base.knots().iter().zip(moved.knots()).filter(|(p, q)| p != q).count();
-                assert_eq!(diff, 0, "moved by ({dx}, {dy}) and scaled by {k}: {diff} of {} knots got other bits", base.len());
+                assert_eq!(diff, 0, "moved by ({dx}, {dy}), turned by {turn} and scaled by {k}: {diff} of {} knots got other bits", base.len());
             }
-            assert!((ga.origin.x - (k * a.knots()[0].anchor.x + dx)).abs() < 1e-9);
+            assert!(ga.origin.distance(m * a.knots()[0].anchor) < 1e-9);
             assert!((gb.unit / fb.unit - k).abs() < 1e-12 * k, "unit {} against {} × {k}", gb.unit, fb.unit);
             assert_eq!(ga.length_in(k * offset).to_bits(), fa.length_in(offset).to_bits(), "the offset scaled by {k} got other bits");
         }
