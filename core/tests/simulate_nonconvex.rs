@@ -596,21 +596,30 @@ fn test_issue_14_a_pair_moved_on_the_artboard_keeps_its_form() {
     use kurbo::Affine;
     for (name, a) in [("L hexagon", shapes::l_shape()), ("drawn heart", shapes::drawn_heart())] {
         let b = shapes::circle_for(&a);
-        let (da, db) = ((250.1, 400.9), (-1000.3, 3.3));
+        let by = [Affine::translate((250.1, 400.9)), Affine::translate((-1000.3, 3.3))];
         let here = run(&a, &b, 0.0, 256, 5000);
-        let there = run(&a.transformed(Affine::translate(da)), &b.transformed(Affine::translate(db)), 0.0, 256, 5000);
-        assert_eq!(here.triangles, there.triangles, "{name}: wanted the same mesh");
-        let size = here.vertices.iter().map(|p| norm(*p)).fold(0.0, f64::max);
-        let moved = here.vertices.iter().zip(&there.vertices).map(|(p, q)| norm(sub(*p, *q))).fold(0.0, f64::max);
-        assert!(moved <= 1e-9 * size, "{name}: wanted the same 3D vertices, one moved by {moved:e} (size {size:.1})");
-        let (v0, v1) = (volume(&here), volume(&there));
-        assert!((v1 / v0 - 1.0).abs() <= 1e-9, "{name}: wanted the volume {v0:.6e}, got {v1:.6e}");
-        for (t, (f, g)) in here.flat.iter().zip(&there.flat).enumerate() {
-            let d = if here.piece[t] == 0 { da } else { db };
-            for (p, q) in f.iter().zip(g) {
-                let off = (q[0] - p[0] - d.0).abs().max((q[1] - p[1] - d.1).abs());
-                assert!(off <= 1e-9 * size, "{name}: triangle {t}'s flat corner moved by ({}, {}), wanted {d:?}", q[0] - p[0], q[1] - p[1]);
-            }
+        let there = run(&a.transformed(by[0]), &b.transformed(by[1]), 0.0, 256, 5000);
+        same_form_carried(name, &here, &there, by);
+    }
+}
+
+/// `there`, the answer for the pieces of `here` each moved by its map of `by` (A's, B's), is
+/// `here`: the same mesh and verdict, the same 3D vertices and volume (to 1e-9), and every
+/// triangle's `flat` corners carried by its piece's map.
+fn same_form_carried(name: &str, here: &Simulation, there: &Simulation, by: [kurbo::Affine; 2]) {
+    assert_eq!(here.triangles, there.triangles, "{name}: wanted the same mesh");
+    assert_eq!(here.stats.converged, there.stats.converged, "{name}: wanted the same verdict");
+    let size = here.vertices.iter().map(|p| norm(*p)).fold(0.0, f64::max);
+    let moved = here.vertices.iter().zip(&there.vertices).map(|(p, q)| norm(sub(*p, *q))).fold(0.0, f64::max);
+    assert!(moved <= 1e-9 * size, "{name}: wanted the same 3D vertices, one moved by {moved:e} (size {size:.1})");
+    let (v0, v1) = (volume(here), volume(there));
+    assert!((v1 / v0 - 1.0).abs() <= 1e-9, "{name}: wanted the volume {v0:.6e}, got {v1:.6e}");
+    for (t, (f, g)) in here.flat.iter().zip(&there.flat).enumerate() {
+        let m = by[here.piece[t] as usize];
+        for (p, q) in f.iter().zip(g) {
+            let want = m * kurbo::Point::new(p[0], p[1]);
+            let off = (q[0] - want.x).abs().max((q[1] - want.y).abs());
+            assert!(off <= 1e-9 * size, "{name}: triangle {t}'s flat corner is {off:e} from where its piece's move takes it");
         }
     }
 }
@@ -625,8 +634,8 @@ fn test_issue_14_a_pair_moved_on_the_artboard_keeps_its_form() {
 /// and `flat` turned and moved with its piece.
 #[test]
 fn test_issue_14_a_pair_turned_on_the_artboard_keeps_its_form() {
-    use kurbo::{Affine, Point};
-    let (ta, tb) = (Affine::translate((40.0, -7.5)) * Affine::rotate(0.3), Affine::translate((-300.0, 12.0)) * Affine::rotate(2.5));
+    use kurbo::Affine;
+    let by = [Affine::translate((40.0, -7.5)) * Affine::rotate(0.3), Affine::translate((-300.0, 12.0)) * Affine::rotate(2.5)];
     for (name, a, b, share) in [
         ("L hexagon + circle", shapes::l_shape(), shapes::circle_for(&shapes::l_shape()), 0.0),
         ("drawn heart + copy", shapes::drawn_heart(), shapes::drawn_heart(), 3.0 / 16.0),
@@ -634,22 +643,8 @@ fn test_issue_14_a_pair_turned_on_the_artboard_keeps_its_form() {
     ] {
         let offset = share * shapes::perimeter(&a);
         let here = run(&a, &b, offset, 256, 5000);
-        let there = run(&a.transformed(ta), &b.transformed(tb), offset, 256, 5000);
-        assert_eq!(here.triangles, there.triangles, "{name}: wanted the same mesh");
-        assert_eq!(here.stats.converged, there.stats.converged, "{name}: wanted the same verdict");
-        let size = here.vertices.iter().map(|p| norm(*p)).fold(0.0, f64::max);
-        let moved = here.vertices.iter().zip(&there.vertices).map(|(p, q)| norm(sub(*p, *q))).fold(0.0, f64::max);
-        assert!(moved <= 1e-9 * size, "{name}: wanted the same 3D vertices, one moved by {moved:e} (size {size:.1})");
-        let (v0, v1) = (volume(&here), volume(&there));
-        assert!((v1 / v0 - 1.0).abs() <= 1e-9, "{name}: wanted the volume {v0:.6e}, got {v1:.6e}");
-        for (t, (f, g)) in here.flat.iter().zip(&there.flat).enumerate() {
-            let m = if here.piece[t] == 0 { ta } else { tb };
-            for (p, q) in f.iter().zip(g) {
-                let want = m * Point::new(p[0], p[1]);
-                let off = (q[0] - want.x).abs().max((q[1] - want.y).abs());
-                assert!(off <= 1e-9 * size, "{name}: triangle {t}'s flat corner is {off:e} from its piece's turn and move");
-            }
-        }
+        let there = run(&a.transformed(by[0]), &b.transformed(by[1]), offset, 256, 5000);
+        same_form_carried(name, &here, &there, by);
     }
 }
 
