@@ -242,7 +242,10 @@ fn test_issue_14_a_turn_symmetric_second_piece_has_one_form_a_period_on() {
             let (v, v0) = (volume(&got), volume(&base));
             assert!((v - v0).abs() <= 1e-6 * v0, "{at}: volume {v}, at 0.05 {v0}");
             assert!(!got.stats.offset_free, "{at}: the offset does change the form within a period");
-            assert!((max_edge_strain(&got) - max_edge_strain(&base)).abs() <= 1e-9, "{at}: edge strain from flat changed");
+            // Solved a cell of the offset away, the strain moves in its sixth digit (2.98263e-4
+            // against 2.98265e-4 for the ellipse); a turn that broke the isometry would move it
+            // by its whole size.
+            assert!((max_edge_strain(&got) - max_edge_strain(&base)).abs() <= 1e-7, "{at}: edge strain from flat changed: {:.6e} against {:.6e}", max_edge_strain(&got), max_edge_strain(&base));
             let (on_a, on_b) = (seam_flat(&got, 0), seam_flat(&got, 1));
             let mut worst = 0.0f64;
             for (j, (qa, qb)) in on_a.iter().zip(&on_b).enumerate().step_by(3) {
