@@ -128,9 +128,9 @@ fn size(c: &Contour) -> f64 {
 
 /// `c` moved to its first anchor, scaled by `1 / unit` and snapped, with its frame; `None` when
 /// that is no valid contour or has no size.
-fn local(c: &Contour, unit: f64, piece: usize) -> Option<(Contour, Frame)> {
+fn local(c: &Contour, unit: f64, piece: usize, turned: bool) -> Option<(Contour, Frame)> {
     let origin = c.knots().first()?.anchor;
-    let turn = turn_of(c);
+    let turn = if turned { turn_of(c) } else { (1.0, 0.0) };
     // `R(−φ)(p − origin) / unit` by hand rather than `Contour::transformed`, whose affine map
     // would round `p · (1/unit) + (−origin · (1/unit))` instead: here one subtraction, one turn
     // and one division, the rounding the module docs count.
@@ -225,17 +225,18 @@ fn turned_size(c: &Contour) -> f64 {
     }
 }
 
-/// `a` and `b` in their frames (see the module docs), with the frames. When either cannot be
+/// `a` and `b` in their frames (see the module docs), with the frames; turned ([`turn_of`]) when
+/// `turned`, else only moved and scaled (a convex pair: see [`super::simulate_observed`]). When either cannot be
 /// framed (an outline whose size is not a positive finite number, or a second piece too large
 /// for the first's unit) both are kept as they are, in the input's frame: the checks that follow
 /// give their own messages on them.
-pub fn pair(a: &Contour, b: &Contour) -> ((Contour, Frame), (Contour, Frame)) {
+pub fn pair(a: &Contour, b: &Contour, turned: bool) -> ((Contour, Frame), (Contour, Frame)) {
     let keep = ((a.clone(), Frame::INPUT), (b.clone(), Frame::INPUT));
-    let unit = turned_size(a) / SIZE;
+    let unit = if turned { turned_size(a) } else { size(a) } / SIZE;
     if !(unit.is_normal() && unit.is_finite()) {
         return keep;
     }
-    match (local(a, unit, 0), local(b, unit, 1)) {
+    match (local(a, unit, 0, turned), local(b, unit, 1, turned)) {
         (Some(fa), Some(fb)) => (fa, fb),
         _ => keep,
     }
@@ -265,7 +266,7 @@ mod tests {
     #[test]
     fn moved_and_scaled_copies_get_the_same_bits_in_their_frames() {
         let (a, b) = (wavy(24, 50.0), wavy(17, 43.0));
-        let ((base_a, fa), (base_b, fb)) = pair(&a, &b);
+        let ((base_a, fa), (base_b, fb)) = pair(&a, &b, true);
         assert_eq!(fa.origin, a.knots()[0].anchor);
         assert_eq!(fb.origin, b.knots()[0].anchor);
         assert_eq!(fa.unit, fb.unit);
@@ -284,7 +285,7 @@ mod tests {
         let offset = 37.123_456_789;
         for (dx, dy, k, turn) in [(37.3, -11.7, 1.0, 0.0), (250.1, 400.9, 1.0, 0.0), (-1000.3, 3.3, 1.0, 0.0), (1e-7, 0.0, 1.0, 0.0), (0.0, 0.0, 72.0 / 25.4, 0.0), (12.5, -3.0, 1.0 / 25.4, 0.0), (0.0, 0.0, 0.001, 0.0), (-7.0, 2.0, 96.0 / 25.4, 0.0), (0.0, 0.0, 100.0, 0.0), (0.0, 0.0, 1.0, 0.3), (40.0, -3.0, 1.0, 2.5), (0.0, 0.0, 72.0 / 25.4, -1.0), (5.5, 1.5, 1.0, std::f64::consts::PI)] {
             let m = Affine::translate((dx, dy)) * Affine::rotate(turn) * Affine::scale(k);
-            let ((ma, ga), (mb, gb)) = pair(&a.transformed(m), &b.transformed(m));
+            let ((ma, ga), (mb, gb)) = pair(&a.transformed(m), &b.transformed(m), true);
             for (base, moved) in [(&base_a, &ma), (&base_b, &mb)] {
                 let diff = base.knots().iter().zip(moved.knots()).filter(|(p, q)| p != q).count();
                 assert_eq!(diff, 0, "moved by ({dx}, {dy}), turned by {turn} and scaled by {k}: {diff} of {} knots got other bits", base.len());
@@ -301,14 +302,14 @@ mod tests {
         let dot = Contour::new(vec![Knot::corner(Point::new(1.0, 2.0)), Knot::corner(Point::new(1.0, 2.0))], 0).unwrap();
         let square = Contour::new([(0.0, 0.0), (5.0, 0.0), (5.0, 5.0), (0.0, 5.0)].map(|(x, y)| Knot::corner(Point::new(x, y))).to_vec(), 1).unwrap();
         for (a, b) in [(&dot, &square), (&square, &dot)] {
-            let ((ka, fa), (kb, fb)) = pair(a, b);
+            let ((ka, fa), (kb, fb)) = pair(a, b, true);
             assert_eq!((ka.knots(), kb.knots()), (a.knots(), b.knots()));
             assert_eq!((fa.origin, fa.unit, fb.unit), (Point::ZERO, 1.0, 1.0));
         }
         let huge = Contour::new(vec![Knot::corner(Point::new(-1e308, 0.0)), Knot::corner(Point::new(1e308, 1.0)), Knot::corner(Point::new(0.0, 1e308))], 0).unwrap();
-        assert_eq!(pair(&huge, &square).0 .0.knots(), huge.knots());
+        assert_eq!(pair(&huge, &square, true).0 .0.knots(), huge.knots());
         // A second piece too large for the first's unit.
         let tiny = square.transformed(Affine::scale(1e-300));
-        assert_eq!(pair(&tiny, &huge).1 .0.knots(), huge.knots());
+        assert_eq!(pair(&tiny, &huge, true).1 .0.knots(), huge.knots());
     }
 }

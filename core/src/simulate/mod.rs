@@ -165,22 +165,31 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     // Each piece in its own frame, so that where the pair sits on the artboard and the units it
     // is drawn in cannot change its form ([`frame`]); the answer goes back to the input's units
     // and place at the end.
-    let ((framed_a, fa), (framed_b, fb)) = frame::pair(a, b);
-    let offset = frame::offset(options.offset, b, &fb);
-    let (a, b) = (framed_a, framed_b);
-    let options = &SimulateOptions {
-        offset,
-        warm: options.warm.as_ref().map(|w| w.iter().map(|p| p.map(|c| c / fa.unit)).collect()),
-        ..options.clone()
+    // A pair with a non-convex piece is framed turned too ([`frame::turn_of`]), so that how its
+    // pieces are turned cannot change its form either; a convex pair, whose exact polyhedron has
+    // no mesh to draw, keeps the frames square to the input (a rectangle drawn square is solved
+    // square: turned, its sides were no longer straight to the bit, and the convex path took 1.7
+    // times the steps).
+    let framed = |turned: bool| -> Result<(Contour, frame::Frame, Contour, frame::Frame, SimulateOptions, seam::Glue)> {
+        let ((framed_a, fa), (framed_b, fb)) = frame::pair(a, b, turned);
+        let options = SimulateOptions {
+            offset: frame::offset(options.offset, b, &fb),
+            warm: options.warm.as_ref().map(|w| w.iter().map(|p| p.map(|c| c / fa.unit)).collect()),
+            ..options.clone()
+        };
+        let glue = seam::Glue::new(&framed_a, &framed_b, options.offset).map_err(|e| match e {
+            Error::PerimeterMismatch { a, b } => Error::PerimeterMismatch { a: fa.length_out(a), b: fa.length_out(b) },
+            e => e,
+        })?;
+        Ok((framed_a, fa, framed_b, fb, options, glue))
     };
-    let glue = seam::Glue::new(&a, &b, options.offset).map_err(|e| match e {
-        Error::PerimeterMismatch { a, b } => Error::PerimeterMismatch { a: fa.length_out(a), b: fa.length_out(b) },
-        e => e,
-    })?;
+    let (a, fa, b, fb, options, glue) = framed(false)?;
     // Convex at the coarsest samples and at the resolution's: an outline that bends inward by
     // a hair between coarse samples (a 200 × 40 ellipse through 64 smooth points) is no convex
     // metric at the resolution, and the convex path would spend the whole budget on it.
     let convex = [seam::COARSEST, options.resolution].iter().all(|&n| glue.sample(n).flat.iter().all(|f| checks::is_convex_polygon(&f.pts)));
+    let (a, fa, b, fb, options, glue) = if convex { (a, fa, b, fb, options, glue) } else { framed(true)? };
+    let options = &options;
     // A non-convex piece with a circle: every offset is the offset-0 form with the circle turned
     // ([`round`]), so it is solved at offset 0, on one mesh of the circle.
     // Likewise B turned onto itself by 2π/k: an offset past the first k-th of the perimeter is
