@@ -126,20 +126,27 @@ fn size(c: &Contour) -> f64 {
     2.0 * (hi.x / 2.0 - lo.x / 2.0).max(hi.y / 2.0 - lo.y / 2.0)
 }
 
-/// `c` moved to its first anchor, scaled by `1 / unit` and snapped, with its frame; `None` when
-/// that is no valid contour or has no size.
-fn local(c: &Contour, unit: f64, piece: usize, turned: bool) -> Option<(Contour, Frame)> {
+/// `c` moved so that its first anchor is the origin and turned back by `turn` (`(cos φ, sin φ)`,
+/// [`turn_of`]), unscaled; `None` when that is no valid contour.
+fn moved(c: &Contour, turn: (f64, f64), piece: usize) -> Option<Contour> {
     let origin = c.knots().first()?.anchor;
-    let turn = if turned { turn_of(c) } else { (1.0, 0.0) };
+    let (tc, ts) = turn;
+    let at = |p: Point| {
+        let (x, y) = (p.x - origin.x, p.y - origin.y);
+        Point::new(tc * x + ts * y, tc * y - ts * x)
+    };
+    Contour::new(c.knots().iter().map(|k| Knot { anchor: at(k.anchor), left: at(k.left), right: at(k.right) }).collect(), piece).ok()
+}
+
+/// `c` moved to its first anchor, turned back by `turn`, scaled by `1 / unit` and snapped, with
+/// its frame; `None` when that is no valid contour or has no size.
+fn local(c: &Contour, unit: f64, piece: usize, turn: (f64, f64)) -> Option<(Contour, Frame)> {
+    let origin = c.knots().first()?.anchor;
     // `R(−φ)(p − origin) / unit` by hand rather than `Contour::transformed`, whose affine map
     // would round `p · (1/unit) + (−origin · (1/unit))` instead: here one subtraction, one turn
     // and one division, the rounding the module docs count.
-    let (tc, ts) = turn;
-    let scale = |p: Point| {
-        let (x, y) = (p.x - origin.x, p.y - origin.y);
-        Point::new((tc * x + ts * y) / unit, (tc * y - ts * x) / unit)
-    };
-    let scaled = Contour::new(c.knots().iter().map(|k| Knot { anchor: scale(k.anchor), left: scale(k.left), right: scale(k.right) }).collect(), piece).ok()?;
+    let scale = |p: Point| Point::new(p.x / unit, p.y / unit);
+    let scaled = Contour::new(moved(c, turn, piece)?.knots().iter().map(|k| Knot { anchor: scale(k.anchor), left: scale(k.left), right: scale(k.right) }).collect(), piece).ok()?;
     let size = size(&scaled);
     if !(size.is_finite() && size > 0.0) {
         return None;
@@ -209,22 +216,6 @@ pub fn turn_of(c: &Contour) -> (f64, f64) {
         .unwrap_or((1.0, 0.0))
 }
 
-/// [`size`] of `c` turned back by [`turn_of`] about its first anchor: the size of the outline
-/// as its frame holds it, the same for the outline drawn turned.
-fn turned_size(c: &Contour) -> f64 {
-    let Some(first) = c.knots().first() else { return f64::NAN };
-    let (tc, ts) = turn_of(c);
-    let o = first.anchor;
-    let turn = |p: Point| {
-        let (x, y) = (p.x - o.x, p.y - o.y);
-        Point::new(tc * x + ts * y, tc * y - ts * x)
-    };
-    match Contour::new(c.knots().iter().map(|k| Knot { anchor: turn(k.anchor), left: turn(k.left), right: turn(k.right) }).collect(), 0) {
-        Ok(t) => size(&t),
-        Err(_) => f64::NAN,
-    }
-}
-
 /// `a` and `b` in their frames (see the module docs), with the frames; turned ([`turn_of`]) when
 /// `turned`, else only moved and scaled (a convex pair: see [`super::simulate_observed`]). When either cannot be
 /// framed (an outline whose size is not a positive finite number, or a second piece too large
@@ -232,11 +223,13 @@ fn turned_size(c: &Contour) -> f64 {
 /// give their own messages on them.
 pub fn pair(a: &Contour, b: &Contour, turned: bool) -> ((Contour, Frame), (Contour, Frame)) {
     let keep = ((a.clone(), Frame::INPUT), (b.clone(), Frame::INPUT));
-    let unit = if turned { turned_size(a) } else { size(a) } / SIZE;
+    let (ta, tb) = if turned { (turn_of(a), turn_of(b)) } else { ((1.0, 0.0), (1.0, 0.0)) };
+    // The unit from the first piece's size as its frame holds it, the same for it drawn turned.
+    let unit = if turned { moved(a, ta, 0).map_or(f64::NAN, |m| size(&m)) } else { size(a) } / SIZE;
     if !(unit.is_normal() && unit.is_finite()) {
         return keep;
     }
-    match (local(a, unit, 0, turned), local(b, unit, 1, turned)) {
+    match (local(a, unit, 0, ta), local(b, unit, 1, tb)) {
         (Some(fa), Some(fb)) => (fa, fb),
         _ => keep,
     }

@@ -88,8 +88,9 @@
 //!   and the intrinsic triangulation for creases across the seam);
 //!   [`sheet`]: the elastic-sheet path of non-convex pairs (meshes with interior vertices, the
 //!   shell energy, the homotopy from convex twins);
-//! - [`frame`]: each piece moved to its first anchor, scaled and snapped, so that where and in
-//!   what units a pair is drawn does not change its form; [`round`]: a circle, whose seam
+//! - [`frame`]: each piece moved to its first anchor, scaled and snapped (and, in a pair with a
+//!   non-convex piece, turned), so that where, in what units and (there) how turned a pair is
+//!   drawn does not change its form; [`round`]: a circle, whose seam
 //!   offset does not change the form either (solved at offset 0, the circle turned), and a B
 //!   that a turn of 2π/k carries onto itself (solved within the first k-th of the perimeter);
 //!   [`fit`]: the least-squares turn and shift of one planar point set onto another;
