@@ -114,33 +114,39 @@ const drawnHeart = { closed: true, points: [
   knot([0, -45], [-20, -20], [20, -20]), knot([55, 30], [55, 15], [55, 45]), knot([30, 60], [42, 60], [18, 60]),
 ] };
 
+// Each seam edge k → k+1 (k indexing `r.seam`) with its two flat lengths [A's, B's], read from
+// the `flat` corners of its two triangles (one in each piece): the seam's own chords,
+// independently of the solver's stats.
+function seamChords(r) {
+  const n = r.seam.length;
+  const at = new Map(r.seam.map((v, k) => [v, k]));
+  const chords = Array.from({ length: n }, () => [0, 0]);
+  r.triangles.forEach((t, f) => {
+    for (let q = 0; q < 3; q++) {
+      const a = at.get(t[q]), b = at.get(t[(q + 1) % 3]);
+      if (a === undefined || b === undefined) continue;
+      const k = (a + 1) % n === b ? a : (b + 1) % n === a ? b : -1;
+      if (k < 0) continue;
+      const [p, w] = [r.flat[f][q], r.flat[f][(q + 1) % 3]];
+      chords[k][r.piece[f]] = Math.hypot(p[0] - w[0], p[1] - w[1]);
+    }
+  });
+  return chords;
+}
+
 // The sampling floor: a seam edge is one mesh edge with two flat lengths, A's chord and B's chord
 // of the same arc (they differ by ~h³(κ_A² − κ_B²)/24), so no mesh on these seam samples can have
 // a smaller max edge strain than (c_A − c_B)/(c_A + c_B) on its worst seam edge, whatever the
-// solver. Read from the result's `flat` corners, independently of the solver's stats.
+// solver.
 function samplingFloor(r) {
-  const n = r.seam.length;
-  const len = new Map();
-  r.triangles.forEach((t, f) => {
-    for (let q = 0; q < 3; q++) {
-      const [i, j] = [t[q], t[(q + 1) % 3]];
-      const a = r.seam.indexOf(i), b = r.seam.indexOf(j);
-      if ((a - b + n) % n !== 1 && (b - a + n) % n !== 1) continue;
-      const key = `${Math.min(i, j)},${Math.max(i, j)}`;
-      const [p, w] = [r.flat[f][q], r.flat[f][(q + 1) % 3]];
-      const e = len.get(key) ?? [null, null];
-      e[r.piece[f]] = Math.hypot(p[0] - w[0], p[1] - w[1]);
-      len.set(key, e);
-    }
-  });
   let worst = 0;
-  for (const [ca, cb] of len.values()) if (ca && cb) worst = Math.max(worst, Math.abs(ca - cb) / (ca + cb));
+  for (const [ca, cb] of seamChords(r)) if (ca && cb) worst = Math.max(worst, Math.abs(ca - cb) / (ca + cb));
   return worst;
 }
 
 // Issue 14's requirement 3, mirror symmetry: a piece symmetric about a line, glued to a circle,
 // has a mirror-symmetric form (the gluing maps the axis point's two sides onto each other by arc
-// length). Read from the mesh alone: each seam vertex's arc length s along A (its `flat` chords),
+// length). Read from the mesh alone: each seam vertex's arc length s along A (its chords, `seamChords`),
 // the seam as a curve X(s), and for an axis at s0 the pairs X(s0 + u), X(s0 − u), u up to half
 // the perimeter. The mirror plane is the one their differences are most along (the dominant
 // eigenvector of Σ ddᵀ, by power iteration) through their midpoints; the gap is how far a
@@ -149,18 +155,7 @@ function samplingFloor(r) {
 // and the form's size (its largest seam chord).
 function mirrorGap(r) {
   const n = r.seam.length;
-  const at = new Map(r.seam.map((v, k) => [v, k]));
-  const step = new Array(n).fill(0);
-  r.triangles.forEach((t, f) => {
-    if (r.piece[f] !== 0) return;
-    for (let q = 0; q < 3; q++) {
-      const a = at.get(t[q]), b = at.get(t[(q + 1) % 3]);
-      if (a === undefined || b === undefined) continue;
-      const [p, w] = [r.flat[f][q], r.flat[f][(q + 1) % 3]];
-      if ((a + 1) % n === b) step[a] = Math.hypot(p[0] - w[0], p[1] - w[1]);
-      else if ((b + 1) % n === a) step[b] = Math.hypot(p[0] - w[0], p[1] - w[1]);
-    }
-  });
+  const step = seamChords(r).map(([a]) => a);
   const cum = [0];
   for (let k = 0; k < n; k++) cum.push(cum[k] + step[k]);
   const L = cum[n];
