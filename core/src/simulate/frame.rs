@@ -127,26 +127,27 @@ fn size(c: &Contour) -> f64 {
 }
 
 /// `c` moved so that its first anchor is the origin and turned back by `turn` (`(cos φ, sin φ)`,
-/// [`turn_of`]), unscaled; `None` when that is no valid contour.
-fn moved(c: &Contour, turn: (f64, f64), piece: usize) -> Option<Contour> {
+/// [`turn_of`]), unscaled, with that anchor; `None` when that is no valid contour.
+fn moved(c: &Contour, turn: (f64, f64), piece: usize) -> Option<(Contour, Point)> {
     let origin = c.knots().first()?.anchor;
     let (tc, ts) = turn;
     let at = |p: Point| {
         let (x, y) = (p.x - origin.x, p.y - origin.y);
         Point::new(tc * x + ts * y, tc * y - ts * x)
     };
-    Contour::new(c.knots().iter().map(|k| Knot { anchor: at(k.anchor), left: at(k.left), right: at(k.right) }).collect(), piece).ok()
+    let knots = c.knots().iter().map(|k| Knot { anchor: at(k.anchor), left: at(k.left), right: at(k.right) }).collect();
+    Some((Contour::new(knots, piece).ok()?, origin))
 }
 
-/// `c` moved to its first anchor, turned back by `turn`, scaled by `1 / unit` and snapped, with
-/// its frame; `None` when that is no valid contour or has no size.
-fn local(c: &Contour, unit: f64, piece: usize, turn: (f64, f64)) -> Option<(Contour, Frame)> {
-    let origin = c.knots().first()?.anchor;
+/// A piece `moved` from its first anchor `origin` and turned back by `turn` ([`moved`]), scaled
+/// by `1 / unit` and snapped, with its frame; `None` when that is no valid contour or has no
+/// size.
+fn local(moved: &Contour, origin: Point, turn: (f64, f64), unit: f64, piece: usize) -> Option<(Contour, Frame)> {
     // `R(−φ)(p − origin) / unit` by hand rather than `Contour::transformed`, whose affine map
     // would round `p · (1/unit) + (−origin · (1/unit))` instead: here one subtraction, one turn
     // and one division, the rounding the module docs count.
     let scale = |p: Point| Point::new(p.x / unit, p.y / unit);
-    let scaled = Contour::new(moved(c, turn, piece)?.knots().iter().map(|k| Knot { anchor: scale(k.anchor), left: scale(k.left), right: scale(k.right) }).collect(), piece).ok()?;
+    let scaled = Contour::new(moved.knots().iter().map(|k| Knot { anchor: scale(k.anchor), left: scale(k.left), right: scale(k.right) }).collect(), piece).ok()?;
     let size = size(&scaled);
     if !(size.is_finite() && size > 0.0) {
         return None;
@@ -205,14 +206,15 @@ pub fn turn_of(c: &Contour) -> (f64, f64) {
         return (sign * dc, sign * ds);
     }
     let k = c.knots();
-    let chord = |i: usize| {
+    let chords: Vec<(f64, f64)> = (0..k.len()).map(|i| {
         let (a, b) = (k[i].anchor, k[(i + 1) % k.len()].anchor);
         (b.x - a.x, b.y - a.y)
-    };
-    let longest = (0..k.len()).map(|i| chord(i).0.hypot(chord(i).1)).fold(0.0, f64::max);
-    (0..k.len())
-        .find(|&i| chord(i).0.hypot(chord(i).1) >= longest * (1.0 - 1e-9))
-        .and_then(|i| unit(chord(i).0, chord(i).1))
+    }).collect();
+    let longest = chords.iter().map(|&(x, y)| x.hypot(y)).fold(0.0, f64::max);
+    chords
+        .iter()
+        .find(|&&(x, y)| x.hypot(y) >= longest * (1.0 - 1e-9))
+        .and_then(|&(x, y)| unit(x, y))
         .unwrap_or((1.0, 0.0))
 }
 
@@ -224,12 +226,13 @@ pub fn turn_of(c: &Contour) -> (f64, f64) {
 pub fn pair(a: &Contour, b: &Contour, turned: bool) -> ((Contour, Frame), (Contour, Frame)) {
     let keep = ((a.clone(), Frame::INPUT), (b.clone(), Frame::INPUT));
     let (ta, tb) = if turned { (turn_of(a), turn_of(b)) } else { ((1.0, 0.0), (1.0, 0.0)) };
+    let (Some((ma, oa)), Some((mb, ob))) = (moved(a, ta, 0), moved(b, tb, 1)) else { return keep };
     // The unit from the first piece's size as its frame holds it, the same for it drawn turned.
-    let unit = if turned { moved(a, ta, 0).map_or(f64::NAN, |m| size(&m)) } else { size(a) } / SIZE;
+    let unit = if turned { size(&ma) } else { size(a) } / SIZE;
     if !(unit.is_normal() && unit.is_finite()) {
         return keep;
     }
-    match (local(a, unit, 0, ta), local(b, unit, 1, tb)) {
+    match (local(&ma, oa, ta, unit, 0), local(&mb, ob, tb, unit, 1)) {
         (Some(fa), Some(fb)) => (fa, fb),
         _ => keep,
     }
