@@ -89,152 +89,207 @@ proptest! {
     fn random_pieces_give_a_closed_bounded_mesh_with_honest_stats(
         a in prop_oneof![star(), oval()], b in prop_oneof![star(), oval()], n in 16usize..40, offset in 0.0f64..1.0,
     ) {
-        let Some(pieces) = normalized_pair(a, b)? else { return Ok(()) };
-        let (segs, lens, perimeter) = segments_and_lengths(&pieces);
-        let o = SimulateOptionsDto { offset: Some(offset * perimeter), resolution: Some(n as f64), ..Default::default() };
-        let r = api::simulate::simulate(&pieces, &o).map_err(|e| TestCaseError::fail(format!("simulate: {e}")))?;
-        let x = &r.vertices;
-        prop_assert!(x.iter().flatten().all(|v| v.is_finite()), "non-finite vertex");
-        prop_assert_eq!(r.seam.len(), n);
-        prop_assert_eq!(r.piece.len(), r.triangles.len());
-        // Any two seam vertices are joined along the seam by at most half the perimeter.
-        let seam_x: Vec<V3> = r.seam.iter().map(|&v| x[v]).collect();
-        let spread = seam_x.iter().flat_map(|p| seam_x.iter().map(move |q| d3(*p, *q))).fold(0.0, f64::max);
-        prop_assert!(spread <= 0.5 * perimeter * (1.0 + 1e-3), "vertices {spread} apart, perimeter {perimeter}");
-        // Closed and consistently oriented: every directed edge as often as its reverse (once
-        // each, or twice where both pieces crease along the same chord, as they may when the
-        // solver cannot realize a strongly non-convex gluing).
-        let mut seen: HashMap<(usize, usize), usize> = HashMap::new();
-        for t in &r.triangles {
-            prop_assert!(t.iter().all(|&i| i < x.len()), "triangle {t:?} indexes past {} vertices", x.len());
-            for m in 0..3 {
-                *seen.entry((t[m], t[(m + 1) % 3])).or_default() += 1;
-            }
-        }
-        for (&(i, j), &c) in &seen {
-            prop_assert!(c <= 2 && seen.get(&(j, i)) == Some(&c), "edge {i}->{j}: used {c} times, reverse {:?}", seen.get(&(j, i)));
-        }
-        // Flat seam samples: where `flat` puts each seam vertex on each piece, checked here to lie
-        // on the outline at one arc length u_k of the gluing on both — A walked counter-clockwise
-        // from its first anchor, B clockwise from its first anchor + offset (connect's `start`
-        // convention) — with u_0 = 0 and u_k increasing. (The core spaces the u_k by curvature,
-        // so they are read, not assumed even.)
-        let mut flat: Vec<Vec<P>> = vec![vec![[f64::NAN; 2]; n]; 2];
-        for (f, (t, &p)) in r.triangles.iter().zip(&r.piece).enumerate() {
-            for m in 0..3 {
-                // Interior vertices (the sheet path's, numbered after the seam) are not samples.
-                if let Some(k) = r.seam.iter().position(|&v| v == t[m]) {
-                    flat[p as usize][k] = r.flat[f][m];
-                }
-            }
-        }
-        prop_assert!(flat.iter().flatten().all(|q| q[0].is_finite()), "a seam vertex in no triangle of a piece");
-        // A non-convex piece with a circle is solved at offset 0 and the circle's flat turned by
-        // the offset (`stats.offsetFree`, simulate/round.rs): its flat seam points then lie
-        // within the circle's own roundness (5e-4 of its radius, as the README says) of its
-        // outline, doubled by the turn, and so does the gluing. Which piece is the circle is
-        // read here from the outline: its samples' spread about their centroid.
-        let radius = perimeter / std::f64::consts::TAU;
-        let round: Option<usize> = r.stats.offset_free.then(|| (0..2).find(|&j| {
-            let pts: Vec<P> = segs[j].iter().flat_map(|c| (0..16).map(move |m| eval(c, m as f64 / 16.0))).collect();
-            let c = pts.iter().fold([0.0, 0.0], |a, q| [a[0] + q[0] / pts.len() as f64, a[1] + q[1] / pts.len() as f64]);
-            pts.iter().all(|q| ((q[0] - c[0]).hypot(q[1] - c[1]) - radius).abs() <= 1e-3 * radius)
-        })).flatten();
-        prop_assert!(!r.stats.offset_free || round.is_some(), "offsetFree, but neither piece is a circle");
-        let turned = 2.0 * 5e-4 * radius;
-        let mut u = vec![[0.0f64; 2]; n];
-        for j in 0..2 {
-            let ccw = signed_area(&segs[j].iter().map(|c| c[0]).collect::<Vec<_>>()) > 0.0;
-            let forward = if j == 0 { ccw } else { !ccw };
-            let s0 = if j == 0 { 0.0 } else { offset * perimeter };
-            let walk = |s: f64| at_arclen(&segs[j], &lens[j], s0 + s, forward);
-            // Start points for the projection: 64 points a segment, their arc length along the
-            // walk summed from chords (close enough to start Newton from).
-            let mut table: Vec<(f64, P)> = Vec::new();
-            let mut sigma = 0.0;
-            for c in &segs[j] {
-                let mut last = eval(c, 0.0);
-                for m in 0..64 {
-                    let p = eval(c, m as f64 / 64.0);
-                    sigma += (p[0] - last[0]).hypot(p[1] - last[1]);
-                    last = p;
-                    let s = if forward { sigma - s0 } else { perimeter - sigma - s0 };
-                    table.push((s.rem_euclid(perimeter), p));
-                }
-                let end = eval(c, 1.0);
-                sigma += (end[0] - last[0]).hypot(end[1] - last[1]);
-            }
-            for k in 0..n {
-                let (s, gap) = project(&walk, &table, flat[j][k], perimeter);
-                let off = if round == Some(j) { turned } else { 1e-6 * perimeter };
-                prop_assert!(gap <= off, "piece {j}: seam vertex {k} is {gap} off the outline");
-                u[k][j] = s;
-            }
-        }
-        // The gluing is exact to the stitching tolerance, except that each kink (a turn tighter
-        // than the seam's steps, taken as a corner: `simulate::kink`) may move it by what its
-        // rounding loses, at most `KINK_SHIFT` of the perimeter; a pair without kinks keeps the
-        // plain tolerance.
-        let kinks: usize = pieces
-            .iter()
-            .map(|p| dformer::simulate::kink::kinks(&dformer::arclen::ArcTable::new(&p.to_contour(0).unwrap(), 1e-11), &[]).len())
-            .sum();
-        let glued = (1e-6 + kinks as f64 * dformer::simulate::kink::KINK_SHIFT) * perimeter + if round.is_some() { 2.0 * turned } else { 0.0 };
-        // The seam starts at A's first anchor, or at a kink whose window holds it (the kink's
-        // tight stretch and `KINK_WINDOW` even steps at `REFERENCE` samples either side).
-        use dformer::simulate::density::{KINK_WINDOW, REFERENCE};
-        let start = if kinks > 0 { (1e-6 + 2.0 * KINK_WINDOW / REFERENCE) * perimeter } else { 1e-6 * perimeter };
-        for k in 0..n {
-            let d = (u[k][0] - u[k][1]).rem_euclid(perimeter);
-            prop_assert!(d.min(perimeter - d) <= glued, "seam vertex {k}: at {} on A but {} on B ({kinks} kinks)", u[k][0], u[k][1]);
-            // Measured from the seam's own first vertex: with `start` added as well (until stop
-            // 32) a pair with a kink whose last seam vertex lay within `start` of the end
-            // wrapped past the first (proptest's case 1fc29db5: vertex 35 of 36 at 292.69 of a
-            // 294.17 perimeter) and was called out of order.
-            let along = |k: usize| (u[k][0] - u[0][0]).rem_euclid(perimeter);
-            prop_assert!(k == 0 || along(k) > along(k - 1), "seam vertices out of order: {:?}", &u[..=k]);
-        }
-        // A turned circle A starts its seam at the seam vertex nearest its first anchor.
-        let widest = (0..n).map(|k| (u[(k + 1) % n][0] - u[k][0]).rem_euclid(perimeter)).fold(0.0, f64::max);
-        let start = if round == Some(0) { start.max(widest) } else { start };
-        prop_assert!(u[0][0].min(perimeter - u[0][0]) <= start, "seam vertex 0 is not at A's first anchor ({kinks} kinks)");
-        let s = &r.stats;
-        let mut strain = 0.0f64;
-        // A mesh with interior vertices (the sheet path of a non-convex pair) promises every
-        // edge within 1e-3 of its flat length; the seam-vertex polyhedron, the length equations.
-        let sheet = x.len() > n;
-        for (f, (t, &p)) in r.triangles.iter().zip(&r.piece).enumerate() {
-            for m in 0..3 {
-                let (i, j) = (t[m], t[(m + 1) % 3]);
-                let (want, l) = (dist2(r.flat[f][m], r.flat[f][(m + 1) % 3]), d3(x[i], x[j]));
-                strain = strain.max((l - want).abs() / want);
-                if !s.converged {
-                    continue;
-                }
-                if sheet {
-                    prop_assert!((l - want).abs() <= 1e-3 * want, "converged, but edge {i}-{j} of piece {p} is {l}, flat {want}");
-                    continue;
-                }
-                let (u, v) = (r.seam.iter().position(|&s| s == i).unwrap(), r.seam.iter().position(|&s| s == j).unwrap());
-                let other = &flat[1 - p as usize];
-                // Converged: a chord keeps its flat length; a seam edge, one length for two
-                // pieces, lies between A's chord and B's. Both to 1e-5: the chord path meets its
-                // length equations to 1e-7, the intrinsic path (creases across the seam) to 1e-5
-                // (`convex::crossing::POLISHED_STRAIN`).
-                if u.abs_diff(v) == 1 || u.abs_diff(v) == n - 1 {
-                    let alt = dist2(other[u], other[v]);
-                    prop_assert!(l >= want.min(alt) * (1.0 - 1e-5) && l <= want.max(alt) * (1.0 + 1e-5),
-                        "converged, but seam edge {u}-{v} is {l}, not between its chords {want} and {alt}");
-                } else {
-                    prop_assert!((l - want).abs() <= 1e-5 * want, "converged, but chord {u}-{v} of piece {p} is {l}, flat {want}");
-                }
-            }
-        }
-        prop_assert!((strain - s.max_strain).abs() <= 1e-6 + 1e-3 * strain, "max strain: recomputed {strain:.3e}, stats {:.3e}", s.max_strain);
-        let (vol, area) = mesh_volume_area(x, &r.triangles);
-        prop_assert!((vol - s.volume).abs() <= 1e-9 * perimeter.powi(3), "volume: mesh {vol}, stats {}", s.volume);
-        prop_assert!((area - s.area).abs() <= 1e-9 * perimeter.powi(2), "area: mesh {area}, stats {}", s.area);
+        closed_bounded_and_honest(a, b, n, offset)?;
     }
+}
+
+/// Regression (issue 14): an ellipse glued first to a non-convex star past half its perimeter is
+/// solved half a perimeter back with its flat turned by half a turn, so its seam starts at the
+/// seam vertex nearest its first anchor, which this test took for a broken gluing ("seam vertex 0
+/// is not at A's first anchor"; proptest's case: a six-arc oval, a 26-point star, 18 seam
+/// vertices, offset 0.61 of the perimeter).
+#[test]
+fn test_issue_14_an_ellipse_first_turned_half_a_perimeter_on_keeps_an_honest_seam() {
+    let a = ellipse([3.0, -2.0], 60.0, 25.0, 6, false);
+    let b = {
+        let rs = [1.0, 1.6, 0.7, 1.3, 0.9, 1.8, 0.6, 1.2, 1.5, 0.8, 1.1];
+        let at = |i: usize| {
+            let t = std::f64::consts::TAU * i as f64 / rs.len() as f64;
+            let r = 40.0 * rs[i % rs.len()];
+            [200.0 + r * t.cos(), 50.0 + r * t.sin()]
+        };
+        let n = rs.len();
+        let pts: Vec<(P, P, P)> = (0..n)
+            .map(|i| {
+                let (p, prev, next) = (at(i), at(i + n - 1), at(i + 1));
+                let d = [(next[0] - prev[0]) / 6.0, (next[1] - prev[1]) / 6.0];
+                (p, [p[0] - d[0], p[1] - d[1]], [p[0] + d[0], p[1] + d[1]])
+            })
+            .collect();
+        path(&pts)
+    };
+    for (n, offset) in [(18, 0.6057646528270488), (32, 0.9)] {
+        closed_bounded_and_honest(a.clone(), b.clone(), n, offset).unwrap_or_else(|e| panic!("{n} seam vertices, offset {offset}: {e}"));
+    }
+}
+
+/// The properties of [`random_pieces_give_a_closed_bounded_mesh_with_honest_stats`] for one pair:
+/// `b` glued to `a` at `offset` (a share of the perimeter) with `n` seam vertices.
+fn closed_bounded_and_honest(a: dformer::api::path::PathDto, b: dformer::api::path::PathDto, n: usize, offset: f64) -> Result<(), TestCaseError> {
+    let Some(pieces) = normalized_pair(a, b)? else { return Ok(()) };
+    let (segs, lens, perimeter) = segments_and_lengths(&pieces);
+    let o = SimulateOptionsDto { offset: Some(offset * perimeter), resolution: Some(n as f64), ..Default::default() };
+    let r = api::simulate::simulate(&pieces, &o).map_err(|e| TestCaseError::fail(format!("simulate: {e}")))?;
+    let x = &r.vertices;
+    prop_assert!(x.iter().flatten().all(|v| v.is_finite()), "non-finite vertex");
+    prop_assert_eq!(r.seam.len(), n);
+    prop_assert_eq!(r.piece.len(), r.triangles.len());
+    // Any two seam vertices are joined along the seam by at most half the perimeter.
+    let seam_x: Vec<V3> = r.seam.iter().map(|&v| x[v]).collect();
+    let spread = seam_x.iter().flat_map(|p| seam_x.iter().map(move |q| d3(*p, *q))).fold(0.0, f64::max);
+    prop_assert!(spread <= 0.5 * perimeter * (1.0 + 1e-3), "vertices {spread} apart, perimeter {perimeter}");
+    // Closed and consistently oriented: every directed edge as often as its reverse (once
+    // each, or twice where both pieces crease along the same chord, as they may when the
+    // solver cannot realize a strongly non-convex gluing).
+    let mut seen: HashMap<(usize, usize), usize> = HashMap::new();
+    for t in &r.triangles {
+        prop_assert!(t.iter().all(|&i| i < x.len()), "triangle {t:?} indexes past {} vertices", x.len());
+        for m in 0..3 {
+            *seen.entry((t[m], t[(m + 1) % 3])).or_default() += 1;
+        }
+    }
+    for (&(i, j), &c) in &seen {
+        prop_assert!(c <= 2 && seen.get(&(j, i)) == Some(&c), "edge {i}->{j}: used {c} times, reverse {:?}", seen.get(&(j, i)));
+    }
+    // Flat seam samples: where `flat` puts each seam vertex on each piece, checked here to lie
+    // on the outline at one arc length u_k of the gluing on both — A walked counter-clockwise
+    // from its first anchor, B clockwise from its first anchor + offset (connect's `start`
+    // convention) — with u_0 = 0 and u_k increasing. (The core spaces the u_k by curvature,
+    // so they are read, not assumed even.)
+    let mut flat: Vec<Vec<P>> = vec![vec![[f64::NAN; 2]; n]; 2];
+    for (f, (t, &p)) in r.triangles.iter().zip(&r.piece).enumerate() {
+        for m in 0..3 {
+            // Interior vertices (the sheet path's, numbered after the seam) are not samples.
+            if let Some(k) = r.seam.iter().position(|&v| v == t[m]) {
+                flat[p as usize][k] = r.flat[f][m];
+            }
+        }
+    }
+    prop_assert!(flat.iter().flatten().all(|q| q[0].is_finite()), "a seam vertex in no triangle of a piece");
+    // A non-convex piece with a circle is solved at offset 0 and the circle's flat turned by
+    // the offset (`stats.offsetFree`, simulate/round.rs): its flat seam points then lie
+    // within the circle's own roundness (5e-4 of its radius, as the README says) of its
+    // outline, doubled by the turn, and so does the gluing. Which piece is the circle is
+    // read here from the outline: its samples' spread about their centroid.
+    let radius = perimeter / std::f64::consts::TAU;
+    let round: Option<usize> = r.stats.offset_free.then(|| (0..2).find(|&j| {
+        let pts: Vec<P> = segs[j].iter().flat_map(|c| (0..16).map(move |m| eval(c, m as f64 / 16.0))).collect();
+        let c = pts.iter().fold([0.0, 0.0], |a, q| [a[0] + q[0] / pts.len() as f64, a[1] + q[1] / pts.len() as f64]);
+        pts.iter().all(|q| ((q[0] - c[0]).hypot(q[1] - c[1]) - radius).abs() <= 1e-3 * radius)
+    })).flatten();
+    prop_assert!(!r.stats.offset_free || round.is_some(), "offsetFree, but neither piece is a circle");
+    let turned = 2.0 * 5e-4 * radius;
+    let mut u = vec![[0.0f64; 2]; n];
+    for j in 0..2 {
+        let ccw = signed_area(&segs[j].iter().map(|c| c[0]).collect::<Vec<_>>()) > 0.0;
+        let forward = if j == 0 { ccw } else { !ccw };
+        let s0 = if j == 0 { 0.0 } else { offset * perimeter };
+        let walk = |s: f64| at_arclen(&segs[j], &lens[j], s0 + s, forward);
+        // Start points for the projection: 64 points a segment, their arc length along the
+        // walk summed from chords (close enough to start Newton from).
+        let mut table: Vec<(f64, P)> = Vec::new();
+        let mut sigma = 0.0;
+        for c in &segs[j] {
+            let mut last = eval(c, 0.0);
+            for m in 0..64 {
+                let p = eval(c, m as f64 / 64.0);
+                sigma += (p[0] - last[0]).hypot(p[1] - last[1]);
+                last = p;
+                let s = if forward { sigma - s0 } else { perimeter - sigma - s0 };
+                table.push((s.rem_euclid(perimeter), p));
+            }
+            let end = eval(c, 1.0);
+            sigma += (end[0] - last[0]).hypot(end[1] - last[1]);
+        }
+        for k in 0..n {
+            let (s, gap) = project(&walk, &table, flat[j][k], perimeter);
+            let off = if round == Some(j) { turned } else { 1e-6 * perimeter };
+            prop_assert!(gap <= off, "piece {j}: seam vertex {k} is {gap} off the outline");
+            u[k][j] = s;
+        }
+    }
+    // The gluing is exact to the stitching tolerance, except that each kink (a turn tighter
+    // than the seam's steps, taken as a corner: `simulate::kink`) may move it by what its
+    // rounding loses, at most `KINK_SHIFT` of the perimeter; a pair without kinks keeps the
+    // plain tolerance.
+    let kinks: usize = pieces
+        .iter()
+        .map(|p| dformer::simulate::kink::kinks(&dformer::arclen::ArcTable::new(&p.to_contour(0).unwrap(), 1e-11), &[]).len())
+        .sum();
+    let glued = (1e-6 + kinks as f64 * dformer::simulate::kink::KINK_SHIFT) * perimeter + if round.is_some() { 2.0 * turned } else { 0.0 };
+    // The seam starts at A's first anchor, or at a kink whose window holds it (the kink's
+    // tight stretch and `KINK_WINDOW` even steps at `REFERENCE` samples either side).
+    use dformer::simulate::density::{KINK_WINDOW, REFERENCE};
+    let start = if kinks > 0 { (1e-6 + 2.0 * KINK_WINDOW / REFERENCE) * perimeter } else { 1e-6 * perimeter };
+    for k in 0..n {
+        let d = (u[k][0] - u[k][1]).rem_euclid(perimeter);
+        prop_assert!(d.min(perimeter - d) <= glued, "seam vertex {k}: at {} on A but {} on B ({kinks} kinks)", u[k][0], u[k][1]);
+        // Measured from the seam's own first vertex: with `start` added as well (until stop
+        // 32) a pair with a kink whose last seam vertex lay within `start` of the end
+        // wrapped past the first (proptest's case 1fc29db5: vertex 35 of 36 at 292.69 of a
+        // 294.17 perimeter) and was called out of order.
+        let along = |k: usize| (u[k][0] - u[0][0]).rem_euclid(perimeter);
+        prop_assert!(k == 0 || along(k) > along(k - 1), "seam vertices out of order: {:?}", &u[..=k]);
+    }
+    // A turned circle A starts its seam at the seam vertex nearest its first anchor, and so
+    // does an A that a k-th of a turn carries onto itself, solved at the offset less its
+    // whole periods with its flat turned (simulate/round.rs). Whether A is one is read here
+    // from the outline: at 32 points, its point a k-th of the perimeter further on is the
+    // point turned by a k-th of a turn (either way) about the samples' centroid.
+    let ccw = signed_area(&segs[0].iter().map(|c| c[0]).collect::<Vec<_>>()) > 0.0;
+    let on_a = |s: f64| at_arclen(&segs[0], &lens[0], s, ccw);
+    let centre = (0..256).map(|m| on_a(perimeter * m as f64 / 256.0)).fold([0.0, 0.0], |c, q| [c[0] + q[0] / 256.0, c[1] + q[1] / 256.0]);
+    let a_turns = (2..=12).any(|k| {
+        [1.0, -1.0].iter().any(|&sense: &f64| {
+            let (sn, cs) = (sense * std::f64::consts::TAU / k as f64).sin_cos();
+            (0..32).all(|m| {
+                let s = perimeter * m as f64 / 32.0;
+                let (p, q) = (on_a(s), on_a(s + perimeter / k as f64));
+                let (x, y) = (p[0] - centre[0], p[1] - centre[1]);
+                (centre[0] + cs * x - sn * y - q[0]).hypot(centre[1] + sn * x + cs * y - q[1]) <= 1e-6 * perimeter
+            })
+        })
+    });
+    let widest = (0..n).map(|k| (u[(k + 1) % n][0] - u[k][0]).rem_euclid(perimeter)).fold(0.0, f64::max);
+    let start = if round == Some(0) || a_turns { start.max(widest) } else { start };
+    prop_assert!(u[0][0].min(perimeter - u[0][0]) <= start, "seam vertex 0 is not at A's first anchor ({kinks} kinks)");
+    let s = &r.stats;
+    let mut strain = 0.0f64;
+    // A mesh with interior vertices (the sheet path of a non-convex pair) promises every
+    // edge within 1e-3 of its flat length; the seam-vertex polyhedron, the length equations.
+    let sheet = x.len() > n;
+    for (f, (t, &p)) in r.triangles.iter().zip(&r.piece).enumerate() {
+        for m in 0..3 {
+            let (i, j) = (t[m], t[(m + 1) % 3]);
+            let (want, l) = (dist2(r.flat[f][m], r.flat[f][(m + 1) % 3]), d3(x[i], x[j]));
+            strain = strain.max((l - want).abs() / want);
+            if !s.converged {
+                continue;
+            }
+            if sheet {
+                prop_assert!((l - want).abs() <= 1e-3 * want, "converged, but edge {i}-{j} of piece {p} is {l}, flat {want}");
+                continue;
+            }
+            let (u, v) = (r.seam.iter().position(|&s| s == i).unwrap(), r.seam.iter().position(|&s| s == j).unwrap());
+            let other = &flat[1 - p as usize];
+            // Converged: a chord keeps its flat length; a seam edge, one length for two
+            // pieces, lies between A's chord and B's. Both to 1e-5: the chord path meets its
+            // length equations to 1e-7, the intrinsic path (creases across the seam) to 1e-5
+            // (`convex::crossing::POLISHED_STRAIN`).
+            if u.abs_diff(v) == 1 || u.abs_diff(v) == n - 1 {
+                let alt = dist2(other[u], other[v]);
+                prop_assert!(l >= want.min(alt) * (1.0 - 1e-5) && l <= want.max(alt) * (1.0 + 1e-5),
+                    "converged, but seam edge {u}-{v} is {l}, not between its chords {want} and {alt}");
+            } else {
+                prop_assert!((l - want).abs() <= 1e-5 * want, "converged, but chord {u}-{v} of piece {p} is {l}, flat {want}");
+            }
+        }
+    }
+    prop_assert!((strain - s.max_strain).abs() <= 1e-6 + 1e-3 * strain, "max strain: recomputed {strain:.3e}, stats {:.3e}", s.max_strain);
+    let (vol, area) = mesh_volume_area(x, &r.triangles);
+    prop_assert!((vol - s.volume).abs() <= 1e-9 * perimeter.powi(3), "volume: mesh {vol}, stats {}", s.volume);
+    prop_assert!((area - s.area).abs() <= 1e-9 * perimeter.powi(2), "area: mesh {area}, stats {}", s.area);
+    Ok(())
 }
 
 /// Volume and area of a closed triangle mesh (divergence theorem; cross products). The volume

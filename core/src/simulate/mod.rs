@@ -193,8 +193,9 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     let options = &options;
     // A non-convex piece with a circle: every offset is the offset-0 form with the circle turned
     // ([`round`]), so it is solved at offset 0, on one mesh of the circle.
-    // Likewise B turned onto itself by 2π/k: an offset past the first k-th of the perimeter is
-    // solved at its remainder (on the frame's cell, the bits of that offset given directly).
+    // Likewise B (or else A) turned onto itself by 2π/k: an offset past the first k-th of the
+    // perimeter is solved at its remainder (on the frame's cell, the bits of that offset given
+    // directly).
     let symmetry = if convex { None } else { round::round_piece(&a, &b) };
     let turn = symmetry.and_then(|(piece, s)| round::Turn::new(piece, s, options.offset));
     // A circle is solved as one canonical circle of the other piece's perimeter, however it was
