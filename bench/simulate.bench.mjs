@@ -363,3 +363,29 @@ for (const [name, a] of [['kidney + circle', kidney], ['five-lobed + circle', lo
   const line = (w, r, bound) => `${w} ${(100 * r.dv).toFixed(2)} % (${r.distinct} distinct of ${r.n}, converged ${r.conv}) (≤ ${bound} %) ${mark(r.dv <= bound / 100)}`;
   console.log(`  ${name.padEnd(36)} ${line('moved: volume spread', mv, 0.01)}   ${line('in pt, in, px:', sc, 0.01)}   ${line('nudged 0.01 mm:', ng, 1)}   ${line('offsets 0, 3, 7, 11/16:', around, 0.01)}`);
 }
+
+// The drawing's bookkeeping (issue 14, requirement 3 presumes the form is the drawing's alone):
+// which knot of the first piece is its first anchor, with a circle (a circle's offset is no
+// choice, so every start glues one metric), and which piece is picked first (the same offset
+// glues the same points either way: A's point at t meets B's at t + s walked clockwise, and
+// swapped, B's point at u meets A's at u + s). Each is the same drawing, so the bound is the
+// moved pair's. And a turn-symmetric piece picked first: offsets a period apart glue one metric
+// and give one form (simulate/round.rs turns A's flat).
+console.log('== bookkeeping (WASM, 256 seam vertices): which knot is first, which piece is first, a turn-symmetric first piece a period on ==');
+{
+  const solve = (p, q, offset = 0) => m.simulate([p, q], { offset, resolution: 256 }).stats;
+  const startedAt = (path, j) => ({ closed: true, points: [...path.points.slice(j), ...path.points.slice(0, j)] });
+  const line = (w, r, bound) => `${w} ${(100 * r.dv).toFixed(2)} % (${r.distinct} distinct of ${r.n}, converged ${r.conv}) (≤ ${bound} %) ${mark(r.dv <= bound / 100)}`;
+  for (const [name, a, starts] of [['kidney + circle', kidney, [0, 9, 18, 27]], ['five-lobed + circle', lobes, [0, 7, 33, 50]]]) {
+    const c = circleFor(a);
+    console.log(`  ${name.padEnd(36)} ${line('first anchor at knots ' + starts.join(', ') + ':', spread(starts.map((j) => solve(startedAt(a, j), c))), 0.01)}`);
+  }
+  const P = m.measure(kidney).perimeter;
+  const five = scaled(lobes, P / m.measure(lobes).perimeter);
+  for (const [name, b] of [['kidney + five lobes', five], ['kidney + 2:1 ellipse', scaled(e, P / m.measure(e).perimeter)]]) {
+    const swaps = [0.05, 0.3].map((f) => spread([solve(kidney, b, f * P), solve(b, kidney, f * P)]));
+    const worst = swaps.reduce((w, r) => (r.dv > w.dv ? r : w));
+    console.log(`  ${name.padEnd(36)} ${line('picked in either order, worst of offsets 0.05 and 0.3:', worst, 0.01)}`);
+  }
+  console.log(`  ${'five lobes + kidney'.padEnd(36)} ${line('offsets 0.05, 0.25, 0.45, 0.65:', spread([0.05, 0.25, 0.45, 0.65].map((f) => solve(five, kidney, f * P))), 0.01)}`);
+}
