@@ -391,11 +391,13 @@ console.log('== bookkeeping (WASM, 256 seam vertices): which knot is first, whic
   // Requirement 3 over the first anchors: the pass or fail of one drawing is partly where it
   // starts, so the volumes at 128 and 256 seam vertices are compared at up to eight starts.
   const at = (p, q, n) => m.simulate([p, q], { offset: 0, resolution: n }).stats;
-  for (const [name, a] of [['Pebble + circle', pebble], ['kidney + circle', kidney], ['five-lobed + circle', lobes]]) {
+  for (const [name, a] of [['Pebble + circle', pebble], ['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart + circle', heart]]) {
     const c = circleFor(a), k = a.points.length, starts = [...new Set(Array.from({ length: Math.min(8, k) }, (_, i) => Math.floor((i * k) / Math.min(8, k))))];
-    const gaps = starts.map((j) => { const p = startedAt(a, j); return Math.abs(at(p, c, 128).volume / at(p, c, 256).volume - 1); });
+    const runs = starts.map((j) => { const p = startedAt(a, j); return [at(p, c, 128), at(p, c, 256)]; });
+    const gaps = runs.map(([lo, hi]) => Math.abs(lo.volume / hi.volume - 1));
     const sorted = [...gaps].sort((x, y) => x - y), median = (sorted[(sorted.length - 1) >> 1] + sorted[sorted.length >> 1]) / 2;
     const within = gaps.filter((g) => g <= 0.01).length;
-    console.log(`  ${name.padEnd(36)} 128 vs 256 at first knots ${starts.join(', ')}: ${gaps.map((g) => (100 * g).toFixed(2)).join(', ')} %; median ${(100 * median).toFixed(2)} % (≤ 1 %) ${mark(median <= 0.01)}, within 1 % at ${within} of ${gaps.length}`);
+    const conv = (i) => runs.filter((r) => r[i].converged).length;
+    console.log(`  ${name.padEnd(36)} 128 vs 256 at first knots ${starts.join(', ')}: ${gaps.map((g) => (100 * g).toFixed(2)).join(', ')} %; median ${(100 * median).toFixed(2)} % (≤ 1 %) ${mark(median <= 0.01)}, within 1 % at ${within} of ${gaps.length}; converged at 128: ${conv(0)}, at 256: ${conv(1)}`);
   }
 }
