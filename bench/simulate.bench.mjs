@@ -390,7 +390,7 @@ console.log('== bookkeeping (WASM, 256 seam vertices): which knot is first, whic
   console.log(`  ${'five lobes + kidney'.padEnd(36)} ${line('offsets 0.05, 0.25, 0.45, 0.65:', spread([0.05, 0.25, 0.45, 0.65].map((f) => solve(five, kidney, f * P))), 0.01)}`);
   // Requirement 3 over the first anchors: the pass or fail of one drawing is partly where it
   // starts, so the volumes at 128 and 256 seam vertices are compared at up to eight starts.
-  const at = (p, q, n) => m.simulate([p, q], { offset: 0, resolution: n }).stats;
+  const at = (p, q, n) => { const t0 = performance.now(); const st = m.simulate([p, q], { offset: 0, resolution: n }).stats; return { ...st, ms: performance.now() - t0 }; };
   for (const [name, a] of [['Pebble + circle', pebble], ['kidney + circle', kidney], ['five-lobed + circle', lobes], ['heart + circle', heart]]) {
     const c = circleFor(a), k = a.points.length, starts = [...new Set(Array.from({ length: Math.min(8, k) }, (_, i) => Math.floor((i * k) / Math.min(8, k))))];
     const runs = starts.map((j) => { const p = startedAt(a, j); return [at(p, c, 128), at(p, c, 256)]; });
@@ -398,6 +398,7 @@ console.log('== bookkeeping (WASM, 256 seam vertices): which knot is first, whic
     const sorted = [...gaps].sort((x, y) => x - y), median = (sorted[(sorted.length - 1) >> 1] + sorted[sorted.length >> 1]) / 2;
     const within = gaps.filter((g) => g <= 0.01).length;
     const conv = (i) => runs.filter((r) => r[i].converged).length;
-    console.log(`  ${name.padEnd(36)} 128 vs 256 at first knots ${starts.join(', ')}: ${gaps.map((g) => (100 * g).toFixed(2)).join(', ')} %; median ${(100 * median).toFixed(2)} % (≤ 1 %) ${mark(median <= 0.01)}, within 1 % at ${within} of ${gaps.length}; converged at 128: ${conv(0)}, at 256: ${conv(1)}`);
+    const ms = runs.map((r) => r[1].ms).sort((x, y) => x - y), slow = ms[ms.length - 1];
+    console.log(`  ${name.padEnd(36)} 128 vs 256 at first knots ${starts.join(', ')}: ${gaps.map((g) => (100 * g).toFixed(2)).join(', ')} %; median ${(100 * median).toFixed(2)} % (≤ 1 %) ${mark(median <= 0.01)}, within 1 % at ${within} of ${gaps.length}; converged at 128: ${conv(0)}, at 256: ${conv(1)}; time at 256 (one solve each) ${ms[0].toFixed(0)}–${slow.toFixed(0)} ms (≤ 1000 ms) ${mark(slow <= 1000)}`);
   }
 }
