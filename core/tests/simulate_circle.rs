@@ -224,7 +224,7 @@ fn near_circles_and_convex_pairs_are_solved_at_their_offset() {
 fn test_issue_14_a_turn_symmetric_second_piece_has_one_form_a_period_on() {
     let [kidney, five, ellipse] = kidney_and_turn_symmetric_pieces();
     for (what, b, period, shifts) in [("kidney + five lobes", five, 0.2, vec![1.0, 3.0]), ("kidney + 2:1 ellipse", ellipse, 0.5, vec![1.0])] {
-        one_form_a_period_on(what, &kidney, &b, 1, period, &shifts);
+        one_form_a_period_on(what, &kidney, &b, [false, true], period, &shifts);
     }
 }
 
@@ -239,8 +239,20 @@ fn test_issue_14_a_turn_symmetric_second_piece_has_one_form_a_period_on() {
 fn test_issue_14_a_turn_symmetric_first_piece_has_one_form_a_period_on() {
     let [kidney, five, ellipse] = kidney_and_turn_symmetric_pieces();
     for (what, a, period, shifts) in [("five lobes + kidney", five, 0.2, vec![1.0, 3.0]), ("2:1 ellipse + kidney", ellipse, 0.5, vec![1.0])] {
-        one_form_a_period_on(what, &a, &kidney, 0, period, &shifts);
+        one_form_a_period_on(what, &a, &kidney, [true, false], period, &shifts);
     }
+}
+
+/// Regression (issue 14): when both pieces are turn-symmetric, their periods combine. The five
+/// lobes with a 2:1 ellipse were solved a half perimeter apart only (the ellipse's period), so
+/// offsets a tenth apart, which glue one metric (a fifth of a turn of the flower and half a turn
+/// of the ellipse add up to every tenth), gave other forms: 285,098–287,265 mm³ at 0.05 to 0.45
+/// (256 seam vertices, native). Now both pieces are turned: the same mesh and form at 0.05 and a
+/// tenth, three tenths and seven tenths on.
+#[test]
+fn test_issue_14_two_turn_symmetric_pieces_have_one_form_every_lcm_period() {
+    let [_, five, ellipse] = kidney_and_turn_symmetric_pieces();
+    one_form_a_period_on("five lobes + 2:1 ellipse", &five, &ellipse, [true, true], 0.1, &[1.0, 3.0, 7.0]);
 }
 
 /// The kidney, and the five-lobed flower and a 2:1 ellipse of eight arcs of its perimeter.
@@ -253,13 +265,13 @@ fn kidney_and_turn_symmetric_pieces() -> [Contour; 3] {
 }
 
 /// `b` glued to `a` at 0.05 of the perimeter and at `shifts` whole periods (each a `period` share
-/// of the perimeter) on, where piece `turned` (0 = A, 1 = B) is carried onto itself by a turn of
-/// that period: the same mesh and form, up to the offset's last bits; every edge at its flat
-/// length; every seam point on both outlines (the turned piece's within its symmetry, 1e-6 of
-/// the perimeter); every seam vertex gluing A's point at arc length `t` to B's at `t + s`
-/// (clockwise) for the offset `s` asked; and the seam starting at A's first anchor, or when A is
-/// turned at the seam vertex nearest it (within half the longest seam step).
-fn one_form_a_period_on(what: &str, a: &Contour, b: &Contour, turned: u8, period: f64, shifts: &[f64]) {
+/// of the perimeter) on, where the pieces `turned` (A, B) may be turned onto themselves: the same
+/// mesh and form, up to the offset's last bits; every edge at its flat length; every seam point
+/// on both outlines (a turned piece's within its symmetry, 1e-6 of the perimeter); every seam
+/// vertex gluing A's point at arc length `t` to B's at `t + s` (clockwise) for the offset `s`
+/// asked; and the seam starting at A's first anchor, or when A may be turned at the seam vertex
+/// nearest it (within half the longest seam step).
+fn one_form_a_period_on(what: &str, a: &Contour, b: &Contour, turned: [bool; 2], period: f64, shifts: &[f64]) {
     let per = shapes::perimeter(a);
     let base = run(a, b, 0.05 * per);
     for &m in shifts {
@@ -281,7 +293,7 @@ fn one_form_a_period_on(what: &str, a: &Contour, b: &Contour, turned: u8, period
         // would move it by its whole size.
         assert!((max_edge_strain(&got) - max_edge_strain(&base)).abs() <= 1e-7, "{at}: edge strain from flat changed: {:.6e} against {:.6e}", max_edge_strain(&got), max_edge_strain(&base));
         let (on_a, on_b) = (seam_flat(&got, 0), seam_flat(&got, 1));
-        let near = |piece: u8| if piece == turned { 1e-6 * per } else { 1e-9 * per };
+        let near = |piece: usize| if turned[piece] { 1e-6 * per } else { 1e-9 * per };
         let mut worst = 0.0f64;
         for (j, (qa, qb)) in on_a.iter().zip(&on_b).enumerate().step_by(3) {
             let (t, gap) = arc_of(a, *qa);
@@ -295,7 +307,7 @@ fn one_form_a_period_on(what: &str, a: &Contour, b: &Contour, turned: u8, period
         let start = a.knots()[0].anchor;
         let step = (0..on_a.len()).map(|k| (on_a[k][0] - on_a[(k + 1) % on_a.len()][0]).hypot(on_a[k][1] - on_a[(k + 1) % on_a.len()][1])).fold(0.0, f64::max);
         let d0 = (on_a[0][0] - start.x).hypot(on_a[0][1] - start.y);
-        let allowed = if turned == 0 { 0.5 * step } else { 1e-9 * per };
+        let allowed = if turned[0] { 0.5 * step } else { 1e-9 * per };
         assert!(d0 <= allowed, "{at}: the seam starts {d0:.3e} from A's first anchor, wanted within {allowed:.3e}");
     }
 }

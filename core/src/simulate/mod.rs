@@ -197,7 +197,15 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     // perimeter is solved at its remainder (on the frame's cell, the bits of that offset given
     // directly).
     let symmetry = if convex { None } else { round::round_piece(&a, &b) };
-    let turn = symmetry.and_then(|(piece, s)| round::Turn::new(piece, s, options.offset));
+    // Both pieces turn-symmetric: their periods combine ([`round::Turn::both`]).
+    let turn = match symmetry {
+        Some((1, sb)) if sb.order > 0 => match round::order(&a) {
+            Some(sa) => round::Turn::both(sa, sb, options.offset),
+            None => round::Turn::new(1, sb, options.offset).map(|(t, at)| (vec![t], at)),
+        },
+        Some((piece, s)) => round::Turn::new(piece, s, options.offset).map(|(t, at)| (vec![t], at)),
+        None => None,
+    };
     // A circle is solved as one canonical circle of the other piece's perimeter, however it was
     // drawn (its arcs, first anchor, sense), and placed back on the drawn one ([`round::Canonical`]).
     let canonical = match symmetry {
@@ -205,12 +213,12 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         Some((1, s)) if s.order == 0 => round::Canonical::new(1, s, &b, &a),
         _ => None,
     };
-    let glue = match (&canonical, turn) {
+    let glue = match (&canonical, &turn) {
         (Some((c, circle)), _) => {
             let (ga, gb) = if c.piece == 0 { (circle, &b) } else { (&a, circle) };
             seam::Glue::new(ga, gb, 0.0)?
         }
-        (None, Some((_, at))) => seam::Glue::new(&a, &b, fb.snap(at))?,
+        (None, Some((_, at))) => seam::Glue::new(&a, &b, fb.snap(*at))?,
         (None, None) => glue,
     };
     // A pair with a non-convex piece: the convex path gives the sheet path its start (or, when
@@ -274,8 +282,8 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     if let Some((c, _)) = &canonical {
         c.place(&mut sim);
     }
-    if let Some((turn, _)) = turn {
-        turn.turn(&mut sim, a.knots()[0].anchor);
+    for t in turn.iter().flat_map(|(turns, _)| turns) {
+        t.turn(&mut sim, a.knots()[0].anchor);
     }
     sim.stats.offset_free = matches!(symmetry, Some((_, s)) if s.order == 0);
     for (corners, &p) in sim.flat.iter_mut().zip(&sim.piece) {

@@ -41,8 +41,9 @@
 //! A's first anchor (the one at `jP/k` before the turn; [`Turn::turn`]). The same pair picked
 //! in the other order, the five lobes first and a kidney second, went from 248,368 to 260,671
 //! mm³ over five offsets a fifth apart (256 seam vertices, native), unconverged at one; now it
-//! is one form. B is turned when both pieces could be, which keeps the seam on A's first
-//! anchor.
+//! is one form. When both pieces are turn-symmetric, of orders `k_A` and `k_B`, their periods
+//! add up to `P/lcm(k_A, k_B)` and both may be turned ([`Turn::both`]): a 2:1 ellipse with the
+//! five lobes is one form every tenth of the perimeter, not every half.
 //!
 //! *One circle.* A circle is solved as the same canonical circle however it was drawn (its
 //! arcs, first anchor, place), and its answer placed back on the drawn one ([`Canonical`]): a
@@ -198,6 +199,36 @@ impl Turn {
         }
         let turns = (whole as i64).rem_euclid(s.order as i64);
         (turns != 0).then(|| (Turn { piece, centre: s.centre, angle: -TAU * turns as f64 / s.order as f64 }, rest.max(0.0)))
+    }
+
+    /// The turns that carry the form at the returned offset to the form at `offset` when both
+    /// pieces have finite orders, `sa` of A and `sb` of B: offsets `P/lcm(k_A, k_B)` apart glue
+    /// one metric, since A's whole periods `P/k_A` and B's `P/k_B` add up to every multiple of
+    /// it (`i·l/k_A + j·l/k_B` runs through every residue mod `l = lcm` as `l/k_A` and `l/k_B`
+    /// are coprime). The offset less its whole such periods, and A turned by `−2πi/k_A`, B by
+    /// `−2πj/k_B` (either turn left out when it is none). `None` when no turn is needed.
+    pub fn both(sa: Symmetry, sb: Symmetry, offset: f64) -> Option<(Vec<Turn>, f64)> {
+        let (ka, kb) = (sa.order, sb.order);
+        if offset == 0.0 || !offset.is_finite() || ka == 0 || kb == 0 {
+            return None;
+        }
+        let gcd = (1..=ka.min(kb)).rev().find(|d| ka % d == 0 && kb % d == 0).unwrap_or(1);
+        let l = ka / gcd * kb;
+        let period = sb.perimeter / l as f64;
+        let mut whole = (offset / period).floor();
+        let mut rest = offset - whole * period;
+        if rest >= period * (1.0 - 1e-12) {
+            whole += 1.0;
+            rest = 0.0;
+        }
+        let w = (whole as i64).rem_euclid(l as i64) as usize;
+        let (i, j) = (0..ka).flat_map(|i| (0..kb).map(move |j| (i, j))).find(|&(i, j)| (i * (l / ka) + j * (l / kb)) % l == w)?;
+        let turns: Vec<Turn> = [(0u8, sa, i), (1u8, sb, j)]
+            .into_iter()
+            .filter(|&(_, _, n)| n != 0)
+            .map(|(piece, s, n)| Turn { piece, centre: s.centre, angle: -TAU * n as f64 / s.order as f64 })
+            .collect();
+        (!turns.is_empty()).then_some((turns, rest.max(0.0)))
     }
 
     /// `q` turned about the centre.
@@ -430,6 +461,32 @@ mod tests {
         let egg = Contour::new((0..40).map(|k| { let t = TAU * k as f64 / 40.0; Knot::corner(Point::new(50.0 * t.cos() * (1.0 + 0.1 * t.cos()), 40.0 * t.sin())) }).collect(), 0).unwrap();
         for (what, c) in [("ellipse of five arcs", ellipse(60.0, 25.0, 5)), ("flower with one lobe larger", flower(0.01)), ("egg", egg)] {
             assert_eq!(order(&c), None, "{what}: wanted no symmetry");
+        }
+    }
+
+    /// Two turn-symmetric pieces: every offset is reduced below `P/lcm(k_A, k_B)` and the two
+    /// turns account for the rest, i.e. A's whole periods and B's add up to what was taken off
+    /// (mod P); within the first such period nothing is turned.
+    #[test]
+    fn two_orders_reduce_offsets_by_their_least_common_period() {
+        let at = |order| Symmetry { centre: Point::ZERO, perimeter: 60.0, order };
+        for (ka, kb, l) in [(5, 2, 10), (3, 4, 12), (6, 4, 12), (2, 2, 2)] {
+            let period = 60.0 / l as f64;
+            for k in 0..3 * l {
+                let offset = (k as f64 + 0.3) * period;
+                let Some((turns, rest)) = Turn::both(at(ka), at(kb), offset) else {
+                    assert!(k % l == 0, "orders {ka}, {kb}: offset {offset} wanted turns");
+                    continue;
+                };
+                assert!((rest - 0.3 * period).abs() < 1e-9, "orders {ka}, {kb}: offset {offset} reduced to {rest}");
+                // A turn by −2πn/k is n of that piece's periods P/k, in either piece.
+                let taken: f64 = turns.iter().map(|t| {
+                    let k = if t.piece == 0 { ka } else { kb };
+                    (-t.angle / TAU * k as f64).round() * 60.0 / k as f64
+                }).sum();
+                let d = (offset - rest - taken).rem_euclid(60.0);
+                assert!(d < 1e-9 || 60.0 - d < 1e-9, "orders {ka}, {kb}: offset {offset}: turns take {taken}, wanted {} mod 60", offset - rest);
+            }
         }
     }
 
