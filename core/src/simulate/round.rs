@@ -189,16 +189,8 @@ impl Turn {
         if s.order == 0 {
             return Some((Turn { piece, centre: s.centre, angle: -TAU * offset / s.perimeter }, 0.0));
         }
-        let period = s.perimeter / s.order as f64;
-        let mut whole = (offset / period).floor();
-        let mut rest = offset - whole * period;
-        // An offset a hair short of a whole period is that period (round-off of `j·P/n`).
-        if rest >= period * (1.0 - 1e-12) {
-            whole += 1.0;
-            rest = 0.0;
-        }
-        let turns = (whole as i64).rem_euclid(s.order as i64);
-        (turns != 0).then(|| (Turn { piece, centre: s.centre, angle: -TAU * turns as f64 / s.order as f64 }, rest.max(0.0)))
+        let (turns, rest) = whole_periods(offset, s.perimeter / s.order as f64, s.order);
+        (turns != 0).then(|| (Turn { piece, centre: s.centre, angle: -TAU * turns as f64 / s.order as f64 }, rest))
     }
 
     /// The turns that carry the form at the returned offset to the form at `offset` when both
@@ -214,21 +206,14 @@ impl Turn {
         }
         let gcd = (1..=ka.min(kb)).rev().find(|d| ka % d == 0 && kb % d == 0).unwrap_or(1);
         let l = ka / gcd * kb;
-        let period = sb.perimeter / l as f64;
-        let mut whole = (offset / period).floor();
-        let mut rest = offset - whole * period;
-        if rest >= period * (1.0 - 1e-12) {
-            whole += 1.0;
-            rest = 0.0;
-        }
-        let w = (whole as i64).rem_euclid(l as i64) as usize;
+        let (w, rest) = whole_periods(offset, sb.perimeter / l as f64, l);
         let (i, j) = (0..ka).flat_map(|i| (0..kb).map(move |j| (i, j))).find(|&(i, j)| (i * (l / ka) + j * (l / kb)) % l == w)?;
         let turns: Vec<Turn> = [(0u8, sa, i), (1u8, sb, j)]
             .into_iter()
             .filter(|&(_, _, n)| n != 0)
             .map(|(piece, s, n)| Turn { piece, centre: s.centre, angle: -TAU * n as f64 / s.order as f64 })
             .collect();
-        (!turns.is_empty()).then_some((turns, rest.max(0.0)))
+        (!turns.is_empty()).then_some((turns, rest))
     }
 
     /// `q` turned about the centre.
@@ -239,7 +224,7 @@ impl Turn {
     }
 
     /// Turns the flat corners of piece `self.piece` in `sim`, the answer at the offset
-    /// [`Turn::new`] returned (each piece's frame coordinates). When A is turned its seam then
+    /// [`Turn::new`] or [`Turn::both`] returned (each piece's frame coordinates). When A is turned its seam then
     /// starts elsewhere on A, so `seam` is rotated to start at the seam vertex nearest
     /// `a_start`, A's first anchor, as it does on every other answer.
     pub fn turn(&self, sim: &mut Simulation, a_start: Point) {
@@ -263,6 +248,19 @@ impl Turn {
         let first = (0..sim.seam.len()).fold(0, |best, k| if d(sim.seam[k]) < d(sim.seam[best]) { k } else { best });
         sim.seam.rotate_left(first);
     }
+}
+
+/// `offset` as whole periods of `period` (taken mod `count`, the periods in the perimeter) and
+/// what is left, in `[0, period)`. An offset a hair short of a whole period is that period
+/// (round-off of `j·P/n`).
+fn whole_periods(offset: f64, period: f64, count: usize) -> (usize, f64) {
+    let mut whole = (offset / period).floor();
+    let mut rest = offset - whole * period;
+    if rest >= period * (1.0 - 1e-12) {
+        whole += 1.0;
+        rest = 0.0;
+    }
+    ((whole as i64).rem_euclid(count as i64) as usize, rest.max(0.0))
 }
 
 /// Bézier arcs of the circle a round piece is solved as ([`Canonical`]): 4.2e-6 of the radius
