@@ -8,7 +8,7 @@
 mod shapes;
 
 use dformer::simulate::seam::Glue;
-use dformer::simulate::sheet::{refine::carry, SheetMesh, COARSE_STRIDE, INTERIOR_EDGE};
+use dformer::simulate::sheet::{level::COARSE_STRIDE, refine::carry, SheetMesh, INTERIOR_EDGE};
 
 type V3 = [f64; 3];
 

@@ -182,7 +182,6 @@ fn test_issue_14_a_circle_drawn_any_way_gives_one_form() {
             assert!((v - v0).abs() <= 1e-3 * v0, "{what}: volume {v}, with eight arcs {v0}");
         }
         assert_eq!(got.stats.converged, base.stats.converged, "{what}: wanted the eight arcs' verdict");
-        assert!((max_edge_strain(&got) - max_edge_strain(&base)).abs() <= 1e-5, "{what}: edge strain from flat changed");
         let (on_a, on_b) = (seam_flat(&got, 0), seam_flat(&got, 1));
         let (mut off, mut worst) = (0.0f64, 0.0f64);
         for (qa, qb) in on_a.iter().zip(&on_b).step_by(4) {

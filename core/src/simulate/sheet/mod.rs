@@ -20,13 +20,14 @@
 //! (Surface Evolver does the same). So the sheet follows a homotopy ([`homotopy`]) from convex
 //! twins of the pieces (same seam edge lengths, so the same gluing), whose D-form the convex
 //! path solves exactly ([`twin_start`]), to the real pieces, as a thick sheet
-//! ([`HOMOTOPY_KB`]), on a coarser mesh of the same pieces where the seam has enough samples
-//! ([`coarse_homotopy`]), carried onto the fine one ([`refine`]); then it is thinned on the fine
-//! mesh through [`SCHEDULE`] (the continuation of Surface
-//! Evolver's elastic-sheet runs) and the answer is the thickest stage within [`STRAIN_TARGET`]
+//! ([`HOMOTOPY_KB`]), on a coarser mesh ([`level::homotopy`]), carried onto the fine one
+//! ([`refine`]); then it is thinned on the fine mesh through [`SCHEDULE`] (the continuation of
+//! Surface Evolver's elastic-sheet runs) and the answer is the thickest stage within [`STRAIN_TARGET`]
 //! and sound: the least-bending equilibrium the path finds that meets the promise. When no twin
 //! can be solved, the start is the convex path's own approximation ([`start`]). Every stage is
-//! reported to an observer ([`crate::simulate::progress`]).
+//! reported to an observer ([`crate::simulate::progress`]). A request of 256 or more seam
+//! samples is solved so on a level of 128 to 255 of them and refined at the seam ([`level`]):
+//! the sheet has several equilibria, and which one a path falls into is decided by its mesh.
 //!
 //! *What it does not do yet.* It follows one path, so "least-bending" is among the stages of
 //! that path, not a search over equilibria. Where the path meets a bifurcation it can end in a
@@ -126,7 +127,8 @@
 //! - [`morph`], [`tutte`], [`homotopy`]: the convex twins, the meshes carried onto them, and the
 //!   homotopy of the metric back to the pieces;
 //! - [`start`]: a polyhedron's shape carried onto the finer mesh;
-//! - [`refine`]: a sheet's shape on the coarse level carried onto the fine mesh;
+//! - [`level`]: the seam level a pair is solved on, whatever the resolution, and refined from;
+//! - [`refine`]: a sheet's shape on a coarser mesh carried onto a finer one;
 //! - [`finish`]: soundness (folds, crossings), the result as a [`crate::simulate::Simulation`]
 //!   and its stats.
 
@@ -137,6 +139,7 @@ pub mod flatmesh;
 pub mod glued;
 pub mod hinge;
 pub mod homotopy;
+pub mod level;
 pub mod morph;
 pub mod refine;
 pub mod retry;
@@ -264,7 +267,7 @@ pub const TWIN_STRIDES: [usize; 4] = [1, 2, 4, 8];
 /// twin of it was solved, and from the fallback start it ended 28 % strained, folded back
 /// (174°) at 1.57e5 mm³ against 2.13e5 at 256; with such a start it ends at 5.2e-3 (its seam
 /// samples' floor there is 4e-3) and 2.08e5 mm³. At 256 the coarse level's twins now start it,
-/// which its own shortcut ([`coarse_homotopy`]) had missed: 0.54–0.62 s native instead of
+/// which its own shortcut ([`level::homotopy`]) had missed: 0.54–0.62 s native instead of
 /// 0.96–1.2. Every other pair of the tests and the bench keeps its start, and its answer bit
 /// for bit: its twins converge before any near one is met (the same from 3e-4 to 3e-3 here).
 pub const TWIN_NEAR: f64 = 1e-3;
@@ -442,50 +445,16 @@ fn homotopy_on(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool, path: Path, 
     Some((shell, x, steps))
 }
 
-/// Seam stride and smallest seam of the coarse level the homotopy is followed on
-/// ([`coarse_homotopy`]).
-pub const COARSE_STRIDE: usize = 2;
-pub const COARSE_MIN: usize = 128;
-
-/// The homotopy followed on a coarser level of the same pieces, every [`COARSE_STRIDE`]-th
-/// seam sample meshed with interior edges as many times longer (the same mesh in seam steps,
-/// about a third of the vertices), and its last shape carried onto `mesh` ([`refine::carry`]),
-/// where the thinning goes on. `None` below [`COARSE_MIN`] seam samples on the coarse level or
-/// when its twins cannot be solved within [`TWIN_BUDGET`]: the coarse level is a shortcut, so it
-/// gets no rescue (before [`TWIN_NEAR`] the rounded star's coarse twins took 60–150 ms native to
-/// fail with one, 40–70 without, before the fine mesh's twins solved; now they start it).
-///
-/// The homotopy is a thick sheet's path (a few percent strain, smooth), which the coarse mesh
-/// follows as well as the fine one: at 256 seam vertices the Pebble, blob, kidney and five lobes
-/// with a circle end in the same equilibria (volumes within 0.3 %) in 60–80 % of the time,
-/// native and interleaved. And at 512 seam vertices it is what lets a reflex corner through:
-/// there the fine twins' interior map inflates the fan at the corner 2.5–4 times (a conformal
-/// map is singular at a reflex corner) and the L's and the dart's homotopies crumpled (67–72 %
-/// strain, the convex path's 3–15 % strained answer was returned); from the coarse level both
-/// end isometric (L 84,341 mm³, 256 seam vertices: 82,049). The thinning is not coarsened:
-/// thinned on the coarse level and only relaxed on the fine one at the last stage, every pair
-/// ended in another equilibrium, bent more (discrete bending energy 7–30 % higher; Pebble 46.9
-/// against 41.2, five lobes 148 against 134), so the thick-to-thin continuation on the fine
-/// mesh is what selects the smoother equilibrium.
-pub fn coarse_homotopy(pieces: &SeamPieces, mesh: &SheetMesh, path: Path, report: &mut Reporter) -> Option<(Vec<V3>, usize)> {
-    if pieces.n % COARSE_STRIDE != 0 || pieces.n / COARSE_STRIDE < COARSE_MIN {
-        return None;
-    }
-    let level = pieces.every(COARSE_STRIDE);
-    let coarse = SheetMesh::new(&level, INTERIOR_EDGE * COARSE_STRIDE as f64)?;
-    let (_, x, steps) = homotopy_on(&level, &coarse, false, path, report)?;
-    Some((refine::carry(&coarse, &x, mesh)?, steps))
-}
-
-/// The homotopy from convex twins ([`homotopy`]), on the coarse level where there is one
-/// ([`coarse_homotopy`]), else on `mesh` (on its plain version when `mesh` is `layered` with
-/// rows beside saddles, [`saddle`]); then the thinning on `mesh` through the stages of
-/// [`SCHEDULE`] thinner than the homotopy's bending weight (`path.kb`, as `kb / R²`:
-/// [`HOMOTOPY_KB`] first, [`retry::KB`] when that ends far off), with the path's self-contact
-/// ([`Touch`], [`retry::CONTACT_KB`]). `None` when no twin pair can be built and solved.
+/// The homotopy from convex twins ([`homotopy`]) on the coarser mesh of the samples' level where
+/// there is one ([`level::homotopy`]), else on `mesh` (on its plain version when `mesh` is
+/// `layered` with rows beside saddles, [`saddle`]); then the thinning on `mesh` through the
+/// stages of [`SCHEDULE`] thinner than the homotopy's bending
+/// weight (`path.kb`, as `kb / R²`: [`HOMOTOPY_KB`] first, [`retry::KB`] when that ends far
+/// off), with the path's self-contact ([`Touch`], [`retry::CONTACT_KB`]). `None` when no twin
+/// pair can be built and solved.
 pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, layered: bool, path: Path, budget: usize, report: &mut Reporter) -> Option<(Shell, Relaxed)> {
-    let (mut shell, x, steps) = match coarse_homotopy(pieces, mesh, path, report) {
-        Some((x, steps)) => (path.shell(pieces, mesh), x, steps),
+    let (mut shell, x, steps) = match level::homotopy(pieces, path, report) {
+        Some(start) => (path.shell(pieces, mesh), refine::carry(&start.mesh, &start.x, mesh)?, start.steps),
         None if layered => {
             // The homotopy on the plain mesh ([`saddle`]), carried onto the layered one.
             let plain = SheetMesh::new(pieces, INTERIOR_EDGE)?;
@@ -516,13 +485,35 @@ pub enum Outcome {
 
 /// The sheet path for a pair with a non-convex piece, from its convex twins ([`follow`]),
 /// refined where its mesh holds it ([`adapt`]), and followed again at other bending weights
-/// when it ends far off ([`retry`]); `iterations` are the steps taken before.
+/// when it ends far off ([`retry`]); `iterations` are the steps taken before. From 256 seam
+/// samples on, the pair is solved so on its level and refined at the seam ([`level::solve`]),
+/// and on its own samples ([`own`]) only when that fails.
 pub fn simulate(pieces: &SeamPieces, iterations: usize, budget: usize, report: &mut Reporter) -> Outcome {
+    let solved = match level::stride(pieces.n) {
+        Some(s) if s > 1 => level::solve(pieces, s, budget, report).map_or_else(|| own(pieces, budget, report), Ok),
+        _ => own(pieces, budget, report),
+    };
+    match solved {
+        Ok(a) => Outcome::Sheet(finish::simulation(pieces, &a.mesh, &a.shell, &a.relaxed.x, iterations + a.relaxed.steps, a.relaxed.converged), a.relaxed.max_strain),
+        Err(outcome) => outcome,
+    }
+}
+
+/// The sheet path on `pieces`' own samples: from its convex twins, refined where its mesh holds
+/// it ([`adapt`]), and followed again at other bending weights when it ends far off
+/// ([`retry`]). `Err` when a piece cannot be meshed or no twin pair can be solved.
+pub fn own(pieces: &SeamPieces, budget: usize, report: &mut Reporter) -> Result<retry::Attempt, Outcome> {
+    let (mesh, saddles, first) = first(pieces, budget, report)?;
+    Ok(retry::others(pieces, &mesh, &saddles, first, budget, report))
+}
+
+/// The first path of [`own`] (before any of [`retry`]): the mesh with its saddle rows, the
+/// saddle samples and the attempt.
+pub fn first(pieces: &SeamPieces, budget: usize, report: &mut Reporter) -> Result<(SheetMesh, Vec<usize>, retry::Attempt), Outcome> {
     let saddles = saddle::samples(pieces);
-    let Some(mesh) = SheetMesh::layered(pieces, INTERIOR_EDGE, &saddles) else { return Outcome::Unmeshed };
-    let Some(first) = retry::attempt(pieces, &mesh, &saddles, Path::plain(HOMOTOPY_KB), budget, report) else { return Outcome::NeedsStart };
-    let a = retry::others(pieces, &mesh, &saddles, first, budget, report);
-    Outcome::Sheet(finish::simulation(pieces, &a.mesh, &a.shell, &a.relaxed.x, iterations + a.relaxed.steps, a.relaxed.converged), a.relaxed.max_strain)
+    let mesh = SheetMesh::layered(pieces, INTERIOR_EDGE, &saddles).ok_or(Outcome::Unmeshed)?;
+    let first = retry::attempt(pieces, &mesh, &saddles, Path::plain(HOMOTOPY_KB), budget, report).ok_or(Outcome::NeedsStart)?;
+    Ok((mesh, saddles, first))
 }
 
 /// The sheet path from the convex path's answer `seam` on the same samples, lifted onto the
