@@ -260,6 +260,7 @@ fn test_issue_14_organic_volumes_agree_at_128_and_256_seam_vertices() {
     ] {
         let b = shapes::circle_for(&a);
         let (coarse, fine) = (run(&a, &b, 0.0, 128, 5000), run(&a, &b, 0.0, 256, 5000));
+        assert!(coarse.stats.converged && fine.stats.converged, "{name}: both must converge");
         for s in [&coarse, &fine] {
             assert_eq!(promise(s), Ok(()), "{name} at {} seam vertices: {}", s.seam.len(), mesh_checks::report(s));
         }

@@ -48,6 +48,7 @@ use super::glued::SheetMesh;
 use super::retry::Attempt;
 use super::{adapt, homotopy_on, refine, saddle, thin, Path, HOMOTOPY_KB, INTERIOR_EDGE, SCHEDULE, STRAIN_TARGET};
 use crate::simulate::checks::faces_cross;
+use crate::simulate::metric::is_seam;
 use crate::simulate::progress::Reporter;
 use crate::simulate::seam::SeamPieces;
 use crate::simulate::vec3::V3;
@@ -129,8 +130,7 @@ pub fn nested(pieces: &SeamPieces, level: &SheetMesh) -> Option<SheetMesh> {
             (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
         };
         for t in &level.faces[p] {
-            let seam_edge = |i: usize, j: usize| i < m && j < m && ((i + 1) % m == j || (j + 1) % m == i);
-            let edges: Vec<usize> = (0..3).filter(|&k| seam_edge(t[k], t[(k + 1) % 3])).collect();
+            let edges: Vec<usize> = (0..3).filter(|&k| t[k] < m && t[(k + 1) % 3] < m && is_seam(m, t[k], t[(k + 1) % 3])).collect();
             let mapped = t.map(id);
             match edges[..] {
                 [] => faces[p].push(mapped),
@@ -199,10 +199,11 @@ pub fn solve(pieces: &SeamPieces, stride: usize, budget: usize, report: &mut Rep
 /// samples above it), they can converge; where theirs are too (the rounded star with a circle,
 /// 1.07e-3 at 256), the level's answer ended stretched, unsound, and was solved again anyway.
 pub fn floor(pieces: &SeamPieces) -> f64 {
-    let [a, b] = [&pieces.flat[0].pts, &pieces.flat[1].pts];
     let n = pieces.n;
-    let chord = |p: &[[f64; 2]], k: usize| (p[(k + 1) % n][0] - p[k][0]).hypot(p[(k + 1) % n][1] - p[k][1]);
-    (0..n).map(|k| (chord(a, k) - chord(b, k)).abs() / (chord(a, k) + chord(b, k))).fold(0.0, f64::max)
+    (0..n).map(|k| {
+        let (a, b) = (pieces.chord(0, k, (k + 1) % n), pieces.chord(1, k, (k + 1) % n));
+        (a - b).abs() / (a + b)
+    }).fold(0.0, f64::max)
 }
 
 #[cfg(test)]
