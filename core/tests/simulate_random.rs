@@ -250,8 +250,23 @@ fn closed_bounded_and_honest(a: dformer::api::path::PathDto, b: dformer::api::pa
             })
         })
     });
+    // A pair with a non-convex piece is solved from its canonical start (simulate/anchor.rs),
+    // so where its drawing starts does not change its form, and `seam` then starts at the seam
+    // vertex nearest A's first anchor, as above. Whether a piece is non-convex is read here
+    // from 64 points a segment: their polygon turns both ways.
+    let turns_both_ways = |j: usize| {
+        let pts: Vec<P> = segs[j].iter().flat_map(|c| (0..64).map(move |m| eval(c, m as f64 / 64.0))).collect();
+        let m = pts.len();
+        let turn = |k: usize| {
+            let (a, b, c) = (pts[(k + m - 1) % m], pts[k], pts[(k + 1) % m]);
+            (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0])
+        };
+        let size = perimeter * perimeter / (m * m) as f64;
+        (0..m).any(|k| turn(k) > 1e-9 * size) && (0..m).any(|k| turn(k) < -1e-9 * size)
+    };
+    let restarted = turns_both_ways(0) || turns_both_ways(1);
     let widest = (0..n).map(|k| (u[(k + 1) % n][0] - u[k][0]).rem_euclid(perimeter)).fold(0.0, f64::max);
-    let start = if round == Some(0) || a_turns { start.max(widest) } else { start };
+    let start = if round == Some(0) || a_turns || restarted { start.max(widest) } else { start };
     prop_assert!(u[0][0].min(perimeter - u[0][0]) <= start, "seam vertex 0 is not at A's first anchor ({kinks} kinks)");
     let s = &r.stats;
     let mut strain = 0.0f64;

@@ -90,7 +90,11 @@
 //!   shell energy, the homotopy from convex twins);
 //! - [`frame`]: each piece moved to its first anchor, scaled and snapped (and, in a pair with a
 //!   non-convex piece, turned), so that where, in what units and (there) how turned a pair is
-//!   drawn does not change its form; [`round`]: a circle, whose seam
+//!   drawn does not change its form; [`anchor`]: a pair with a non-convex piece restarted at
+//!   its outline's canonical start (on a mirror axis when it has one), so that where the drawing
+//!   starts does not either, and solved from a second start when that answer misses a little
+//!   or crosses itself;
+//!   [`round`]: a circle, whose seam
 //!   offset does not change the form either (solved at offset 0, the circle turned), and a B
 //!   that a turn of 2π/k carries onto itself (solved within the first k-th of the perimeter);
 //!   [`fit`]: the least-squares turn and shift of one planar point set onto another;
@@ -101,8 +105,10 @@
 //! Imports run one way: `vec3`, `metric`, `fit` ← `seam`, `mesh`, `checks`, `isometry` ← `convex` ←
 //! `solve` ← this module; `stats` reads `mesh` and `checks`; `sheet` reads `convex` (the twins'
 //! polyhedron), `checks`, `stats` and `normal`, and only this module reads `sheet`; `frame`
-//! reads only `contour` and `arclen`, `round` those and this module's `Simulation`.
+//! reads only `contour` and `arclen`, `round` those and this module's `Simulation`, `anchor`
+//! those, `round`, `checks` and `seam`.
 
+pub mod anchor;
 pub mod checks;
 pub mod clock;
 pub mod convex;
@@ -171,10 +177,10 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     // no mesh to draw, keeps the frames square to the input (a rectangle drawn square is solved
     // square: turned, its sides were no longer straight to the bit, and the convex path took 1.7
     // times the steps).
-    let framed = |turned: bool| -> Result<(Contour, frame::Frame, Contour, frame::Frame, SimulateOptions, seam::Glue)> {
+    let framed = |a: &Contour, b: &Contour, offset: f64, turned: bool| -> Result<Framed> {
         let ((framed_a, fa), (framed_b, fb)) = frame::pair(a, b, turned);
         let options = SimulateOptions {
-            offset: frame::offset(options.offset, b, &fb),
+            offset: frame::offset(offset, b, &fb),
             warm: options.warm.as_ref().map(|w| w.iter().map(|p| p.map(|c| c / fa.unit)).collect()),
             ..options.clone()
         };
@@ -184,12 +190,54 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         })?;
         Ok((framed_a, fa, framed_b, fb, options, glue))
     };
-    let (a, fa, b, fb, options, glue) = framed(false)?;
+    let drawn = (a, b, options.offset);
+    let plain = framed(a, b, options.offset, false)?;
     // Convex at the coarsest samples and at the resolution's: an outline that bends inward by
     // a hair between coarse samples (a 200 × 40 ellipse through 64 smooth points) is no convex
     // metric at the resolution, and the convex path would spend the whole budget on it.
-    let convex = [seam::COARSEST, options.resolution].iter().all(|&n| glue.sample(n).flat.iter().all(|f| checks::is_convex_polygon(&f.pts)));
-    let (a, fa, b, fb, options, glue) = if convex { (a, fa, b, fb, options, glue) } else { framed(true)? };
+    let convex = [seam::COARSEST, plain.4.resolution].iter().all(|&n| plain.5.sample(n).flat.iter().all(|f| checks::is_convex_polygon(&f.pts)));
+    let per_start = options.max_iterations.min(options::START_MAX_ITERATIONS);
+    let with_cap = |f: Framed, cap: usize| (f.0, f.1, f.2, f.3, SimulateOptions { max_iterations: cap, ..f.4 }, f.5);
+    if convex {
+        let mut sim = in_frames(with_cap(plain, per_start), true, None, observe)?;
+        sim.stats.ms = timer.elapsed_ms();
+        return Ok(sim);
+    }
+    // A pair with a non-convex piece is solved from its outline's canonical start ([`anchor`]),
+    // so that where the drawing starts cannot change its form either; when that answer misses
+    // its promise by a little or passes through itself, from the point half the perimeter round
+    // too ([`anchor::retry`]), and the better is kept ([`anchor::better`]).
+    let starts = anchor::restarts(drawn.0, drawn.1, drawn.2);
+    let solve_from = |k: usize, cap: usize, observe: &mut dyn FnMut(progress::Progress)| -> Result<Simulation> {
+        let (ra, rb, offset) = starts[k].as_ref().map_or((drawn.0, drawn.1, drawn.2), |(ra, rb, offset)| (ra, rb, *offset));
+        let at = starts[k].as_ref().map(|_| drawn.0.knots()[0].anchor);
+        in_frames(with_cap(framed(ra, rb, offset, true)?, cap), false, at, observe)
+    };
+    let mut done = 0;
+    let mut sim = solve_from(0, per_start, &mut |p: progress::Progress| {
+        done = p.done;
+        observe(p)
+    })?;
+    let left = options.max_iterations.saturating_sub(sim.stats.iterations);
+    if left > 0 && anchor::retry(&sim, sheet::PATIENT_ABOVE * sheet::STRAIN_TARGET, sheet::retry::TOUCH_BELOW) {
+        // The second start's stages fill what the first left of the progress bar.
+        let mut after = |p: progress::Progress| observe(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
+        let other = solve_from(1, left.min(options::START_MAX_ITERATIONS), &mut after)?;
+        sim = anchor::better(sim, other);
+    }
+    sim.stats.ms = timer.elapsed_ms();
+    Ok(sim)
+}
+
+/// A pair in its frames: each piece and its frame, the options in the frame and the gluing.
+type Framed = (Contour, frame::Frame, Contour, frame::Frame, SimulateOptions, seam::Glue);
+
+/// One pair in its frames solved: the convex path for a `convex` pair, else the sheet path
+/// after it; the answer in the input's units and place, its `seam` started at the seam vertex
+/// nearest `seam_start` (A's drawn first anchor, for a pair solved from another start) when
+/// given.
+fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, observe: &mut dyn FnMut(progress::Progress)) -> Result<Simulation> {
+    let (a, fa, b, fb, options, glue) = framed;
     let options = &options;
     // A non-convex piece with a circle: every offset is the offset-0 form with the circle turned
     // ([`round`]), so it is solved at offset 0, on one mesh of the circle.
@@ -290,6 +338,9 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         let f = if p == 0 { fa } else { fb };
         *corners = corners.map(|q| f.to_input(q));
     }
+    if let Some(at) = seam_start {
+        anchor::start_seam_at(&mut sim, at);
+    }
     let u = fa.unit;
     for v in &mut sim.vertices {
         *v = v.map(|c| c * u);
@@ -297,6 +348,5 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     sim.stats.seam_gap *= u;
     sim.stats.area *= u * u;
     sim.stats.volume *= u * u * u;
-    sim.stats.ms = timer.elapsed_ms();
     Ok(sim)
 }

@@ -9,9 +9,13 @@ pub const DEFAULT_RESOLUTION: usize = 256;
 pub const MIN_RESOLUTION: usize = 8;
 /// Most seam vertices (beyond this the solve stops being interactive).
 pub const MAX_RESOLUTION: usize = 4096;
-/// Default cap on Levenberg–Marquardt steps: room for the solver's patient second pass (see
-/// `solver::PATIENT`) after a quick first pass of at most 1,000 steps.
-pub const DEFAULT_MAX_ITERATIONS: usize = 5000;
+/// Most Levenberg–Marquardt steps one solve of a pair takes: room for the convex path's patient
+/// second pass after a quick first pass of at most 1,000 steps, and for the sheet path's
+/// retries.
+pub const START_MAX_ITERATIONS: usize = 5000;
+/// Default cap on steps in all: room for a non-convex pair solved from two starts
+/// ([`crate::simulate::anchor::retry`]), each of at most [`START_MAX_ITERATIONS`].
+pub const DEFAULT_MAX_ITERATIONS: usize = 2 * START_MAX_ITERATIONS;
 
 /// Checked options. `warm` holds a previous result's vertices (seam order), if any.
 #[derive(Debug, Clone, PartialEq)]

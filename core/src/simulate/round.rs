@@ -233,20 +233,9 @@ impl Turn {
                 *corners = corners.map(|q| self.apply(q));
             }
         }
-        if self.piece != 0 {
-            return;
+        if self.piece == 0 {
+            super::anchor::start_seam_at(sim, a_start);
         }
-        let mut on_a: Vec<Option<[f64; 2]>> = vec![None; sim.vertices.len()];
-        for ((t, corners), &p) in sim.triangles.iter().zip(&sim.flat).zip(&sim.piece) {
-            if p == 0 {
-                for (&v, &q) in t.iter().zip(corners) {
-                    on_a[v] = Some(q);
-                }
-            }
-        }
-        let d = |v: usize| on_a[v].map_or(f64::INFINITY, |q| (q[0] - a_start.x).hypot(q[1] - a_start.y));
-        let first = (0..sim.seam.len()).fold(0, |best, k| if d(sim.seam[k]) < d(sim.seam[best]) { k } else { best });
-        sim.seam.rotate_left(first);
     }
 }
 
