@@ -104,6 +104,15 @@ impl Contour {
         Contour { knots }
     }
 
+    /// The same outline drawn from knot `k` (taken modulo the knot count): its knots turned to
+    /// begin there, every segment unchanged.
+    pub fn started_at(&self, k: usize) -> Contour {
+        let mut knots = self.knots.clone();
+        let n = knots.len().max(1);
+        knots.rotate_left(k % n);
+        Contour { knots }
+    }
+
     /// Control-point bounding box `(min, max)`; contains the curve.
     pub fn control_bounds(&self) -> (Point, Point) {
         let mut min = Point::new(f64::INFINITY, f64::INFINITY);
@@ -153,6 +162,18 @@ mod tests {
         assert_eq!(r.knots()[0].anchor, s.knots()[0].anchor);
         assert_eq!(r.knots()[1].anchor, s.knots()[3].anchor);
         assert!((r.signed_area() + 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn started_at_keeps_every_segment_and_begins_at_the_knot() {
+        let s = square();
+        for k in 0..6 {
+            let t = s.started_at(k);
+            assert_eq!(t.knots()[0], s.knots()[k % 4], "from knot {k}");
+            for i in 0..4 {
+                assert_eq!(t.segment(i), s.segment(i + k), "from knot {k}: segment {i}");
+            }
+        }
     }
 
     #[test]

@@ -313,12 +313,6 @@ fn one_form_a_period_on(what: &str, a: &Contour, b: &Contour, turned: [bool; 2],
     }
 }
 
-/// `c` with its knots turned to start at knot `k` (the same outline drawn from another point).
-fn started_at(c: &Contour, k: usize) -> Contour {
-    let m = c.knots().len();
-    Contour::new((0..m).map(|i| c.knots()[(i + k) % m].clone()).collect(), 0).unwrap()
-}
-
 /// Regression (issue 14): which knot a drawing starts at chose its form. The seam samples are
 /// equal steps from the seam's start, so each first anchor drew other meshes and the sheet fell
 /// into another of its equilibria: the kidney with a circle, started at eight of its knots, spread
@@ -338,7 +332,7 @@ fn test_issue_14_where_the_outline_starts_does_not_change_the_form() {
         let p = shapes::perimeter(&a);
         let base = run(&a, &b, 0.0);
         let m = a.knots().len();
-        for (what, drawn) in [(format!("{name} started at knot {}", m / 3), started_at(&a, m / 3)), (format!("{name} started at knot {}", 2 * m / 3 + 1), started_at(&a, 2 * m / 3 + 1)), (format!("{name} drawn clockwise"), a.reversed())] {
+        for (what, drawn) in [(format!("{name} started at knot {}", m / 3), a.started_at(m / 3)), (format!("{name} started at knot {}", 2 * m / 3 + 1), a.started_at(2 * m / 3 + 1)), (format!("{name} drawn clockwise"), a.reversed())] {
             let got = run(&drawn, &b, 0.0);
             let (v, v0) = (volume(&got), volume(&base));
             let moved = got.vertices.iter().zip(&base.vertices).map(|(p, q)| (0..3).map(|k| (p[k] - q[k]).abs()).fold(0.0, f64::max)).fold(0.0, f64::max);
@@ -363,7 +357,7 @@ fn test_issue_14_where_the_outline_starts_does_not_change_the_form() {
     let base = run(&a, &b, 0.125 * per);
     for k in [17, 50] {
         let what = format!("kidney + 2:1 ellipse started at knot {k}");
-        let drawn = started_at(&a, k);
+        let drawn = a.started_at(k);
         let along = ArcTable::new(&a, 1e-13).segment_start(k);
         let s = (0.125 * per + along).rem_euclid(per);
         let got = run(&drawn, &b, s);

@@ -133,10 +133,9 @@ pub fn canonical_start(c: &Contour) -> Start {
     let scale = 2f64.powi(DISTANCE_BITS);
     let quantum = |x: f64| (x / far * scale).round() as i64;
     let tolerance = MIRROR_TOLERANCE * far.sqrt();
-    let segments: Vec<kurbo::CubicBez> = c.segments().collect();
     let mut axis: Option<(i64, Start)> = None;
     for k in 0..m {
-        let middle = segments[k].eval(0.5);
+        let middle = c.segment(k).eval(0.5);
         for (start, on, j) in [(Start::Knot(k), anchors[k], k), (Start::At(k, 0.5), middle, k + 1)] {
             let q = quantum(on.distance_squared(centre));
             if axis.is_some_and(|(best, _)| best >= q) || !mirrored_about(c, centre, on, k, j, tolerance) {
@@ -161,15 +160,15 @@ pub fn canonical_start(c: &Contour) -> Start {
 }
 
 /// `c` started at `start`: its knots turned to begin at that knot, or with the segment split
-/// at its middle (de Casteljau: the same curve) and begun at the new knot; with the arc length from `c`'s first
-/// anchor to the new start. `None` when that is no valid contour.
+/// there (de Casteljau: the same curve) and begun at the new knot; with the arc length from
+/// `c`'s first anchor to the new start. `None` when that is no valid contour.
 fn started(c: &Contour, start: Start, piece: usize) -> Option<(Contour, f64)> {
     let mut knots = c.knots().to_vec();
     let k = match start {
         Start::Knot(k) => k,
         Start::At(k, t) => {
             let m = knots.len();
-            let seg = kurbo::CubicBez::new(knots[k].anchor, knots[k].right, knots[(k + 1) % m].left, knots[(k + 1) % m].anchor);
+            let seg = c.segment(k);
             let (first, second) = (seg.subsegment(0.0..t), seg.subsegment(t..1.0));
             knots[k].right = first.p1;
             knots[(k + 1) % m].left = second.p2;
@@ -179,9 +178,7 @@ fn started(c: &Contour, start: Start, piece: usize) -> Option<(Contour, f64)> {
     };
     let split = Contour::new(knots, piece).ok()?;
     let s = ArcTable::new(&split, SAMPLE_ACCURACY).segment_start(k);
-    let m = split.knots().len();
-    let turned = Contour::new((0..m).map(|i| split.knots()[(i + k) % m].clone()).collect(), piece).ok()?;
-    Some((turned, s))
+    Some((split.started_at(k), s))
 }
 
 /// A pair restarted: A, B and the offset that keeps the drawn gluing.
@@ -296,16 +293,11 @@ mod tests {
         Contour::new(knots, 0).unwrap()
     }
 
-    fn turned(c: &Contour, k: usize) -> Contour {
-        let m = c.knots().len();
-        Contour::new((0..m).map(|i| c.knots()[(i + k) % m].clone()).collect(), 0).unwrap()
-    }
-
     /// The anchor the start is at (a knot's, or the middle of its segment).
     fn point(c: &Contour, s: Start) -> Point {
         match s {
             Start::Knot(k) => c.knots()[k].anchor,
-            Start::At(k, t) => c.segments().nth(k).unwrap().eval(t),
+            Start::At(k, t) => c.segment(k).eval(t),
         }
     }
 
@@ -359,7 +351,7 @@ mod tests {
         ];
         for (what, c, wanted) in cases {
             for first in 0..c.knots().len() {
-                let d = turned(&c, first);
+                let d = c.started_at(first);
                 let s = canonical_start(&d);
                 let got = point(&d, s);
                 assert!(wanted(got), "{what} started at knot {first}: the seam starts at {got:?} ({s:?})");
