@@ -58,10 +58,12 @@ async function open3d(name, rect) {
 }
 
 test('3D tab: a form the solver cannot realize is clearly marked approximate; a realized one is not', async () => {
-  // A five-pointed star (spikes 2.5× the notches' radius) + circle, both 200 mm around: the
-  // solver stops at a stretched shape (the square it used to fail on is realized now).
+  // A five-pointed star (spikes 4× the notches' radius) + circle, both 200 mm around: the
+  // solver stops at a creased shape (the square it used to fail on is realized now, and so,
+  // since symmetric pairs get mirror-symmetric meshes, is a star with spikes 2.5× the notches'
+  // radius: bent by 88.9° at most).
   const pts = Array.from({ length: 10 }, (_, i) => {
-    const r = i % 2 ? 10 : 25, t = (Math.PI * i) / 5;
+    const r = i % 2 ? 10 : 40, t = (Math.PI * i) / 5;
     return [70 + r * Math.sin(t), 75 - r * Math.cos(t)];
   });
   const starPerimeter = pts.reduce((s, p, i) => s + Math.hypot(pts[(i + 1) % 10][0] - p[0], pts[(i + 1) % 10][1] - p[1]), 0);

@@ -541,9 +541,9 @@
    * is no stretched guess, and telling a student it "stretches up to 0 %" explained nothing. The
    * fold's advice is what the core's tests find (simulate_nonconvex.rs,
    * test_issue_14_a_shallower_bay_avoids_the_crease_that_rounded_corners_keep): an L whose notch
-   * is half its width creases the circle with its corners sharp or rounded by 2–10 mm; with a
-   * notch of a quarter, its corners rounded, it does not (sharp, it bends by about 90°, on the
-   * line), and a heart drawn with corners stops creasing it when its dip is made shallower.
+   * is half its width creases the circle with its corners sharp, and rounded by 2–10 mm it bends
+   * by 84–130° depending on the mesh (on either side of the 90° line); with a notch of a quarter,
+   * its corners rounded, it does not crease (sharp, it bends by about 90°, on the line).
    */
   function approximateText(st) {
     var tail = ' OBJ/STL export this approximate shape.';
@@ -551,7 +551,7 @@
       return '⚠ Approximate preview: both pieces keep their flat shape here, but one is bent sharply, by up to ' +
         (st.maxBend * 180 / Math.PI).toFixed(0) + '°, along a line inside it (drawn in violet, dashed where it is behind the surface), where real material creases. The real D-form will ' +
         'look different there: it may crease, or take a smoother shape the solver did not find. Making a deep inward bay ' +
-        '(an L\'s notch, a heart\'s dip) shallower usually avoids it; rounding its corners does not.' + tail;
+        '(an L\'s notch, a heart\'s dip) shallower usually avoids it; rounding its corners alone may not.' + tail;
     }
     if (st.shortfall === 'sampling') {
       return '⚠ Approximate preview: the outline turns too tightly somewhere (a corner rounded by a fraction of a millimetre) ' +

@@ -20,7 +20,8 @@
 //! middle of a segment: the samples, equal steps either way from there, are then mirror images,
 //! and the form of a symmetric pair can be symmetric (issue 14's requirement 3). A 1:2 ellipse
 //! with a dent, symmetric about its long axis, started off the axis, was 1.9 % of its size from
-//! its mirror image at 128 seam vertices; on it, within the test's 0.5 %.
+//! its mirror image at 128 seam vertices; on it, within the test's 0.5 %; and with the pair's
+//! meshes made mirror images of themselves ([`super::sheet::mirror`]), to round-off.
 //!
 //! *A second start.* The canonical start is one draw of the meshes, no luckier than the drawn
 //! first anchor was. An answer that misses its promise by a little, or passes through itself

@@ -51,6 +51,12 @@ pub fn seam_step(p: &[[f64; 2]], k: usize) -> f64 {
     0.5 * ((a[0] - b[0]).hypot(a[1] - b[1]) + (c[0] - b[0]).hypot(c[1] - b[1]))
 }
 
+/// Mean edge length of the closed polygon `p` (its mean seam step).
+pub fn mean_step(p: &[[f64; 2]]) -> f64 {
+    let n = p.len();
+    (0..n).map(|k| (p[k][0] - p[(k + 1) % n][0]).hypot(p[k][1] - p[(k + 1) % n][1])).sum::<f64>() / n as f64
+}
+
 /// The closed polygon `p` as a kurbo path, for kurbo's point-in-shape test (non-zero winding).
 pub fn outline(p: &[[f64; 2]]) -> kurbo::BezPath {
     let n = p.len();
@@ -68,13 +74,51 @@ pub fn outline(p: &[[f64; 2]]) -> kurbo::BezPath {
 /// [`FAN_ANGLE`]. The points `inner` (inside the polygon, e.g. [`super::saddle::rows`]) are
 /// kept as vertices too.
 pub fn mesh_piece_with_fans(seam: &[[f64; 2]], max_area: f64, fans: &[usize], inner: &[[f64; 2]]) -> Option<FlatMesh> {
+    mesh_polygon(seam, max_area, fans, inner, Build::Bulk)
+}
+
+/// How the polygon's constrained triangulation is built before it is refined.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Build {
+    /// spade's bulk loading: fast, but a vertex it cannot place in its sweep (one at the same
+    /// angle from the sweep's centre as another, as the collinear points of a mirror axis are)
+    /// is inserted afterwards in the order of a randomly seeded hash set, and the mesh then
+    /// differs from run to run.
+    Bulk,
+    /// The vertices inserted one by one in order, then the boundary edges: the same mesh on
+    /// every run whatever the points' alignment ([`super::mirror`] meshes a half bounded by its
+    /// axis so).
+    InOrder,
+}
+
+/// [`mesh_piece_with_fans`], its triangulation built by `build`.
+pub(super) fn mesh_polygon(seam: &[[f64; 2]], max_area: f64, fans: &[usize], inner: &[[f64; 2]], build: Build) -> Option<FlatMesh> {
     let n = seam.len();
     if n < 3 || !(max_area > 0.0 && max_area.is_finite()) {
         return None;
     }
     let vertices: Vec<Point2<f64>> = seam.iter().map(|p| Point2::new(p[0], p[1])).collect();
-    let edges: Vec<[usize; 2]> = (0..n).map(|k| [k, (k + 1) % n]).collect();
-    let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::bulk_load_cdt(vertices, edges).ok()?;
+    let mut cdt = match build {
+        Build::Bulk => {
+            let edges: Vec<[usize; 2]> = (0..n).map(|k| [k, (k + 1) % n]).collect();
+            ConstrainedDelaunayTriangulation::<Point2<f64>>::bulk_load_cdt(vertices, edges).ok()?
+        }
+        Build::InOrder => {
+            let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::new();
+            let handles = vertices.into_iter().map(|v| cdt.insert(v).ok()).collect::<Option<Vec<_>>>()?;
+            if cdt.num_vertices() != n {
+                return None;
+            }
+            for k in 0..n {
+                let (from, to) = (handles[k], handles[(k + 1) % n]);
+                if !cdt.can_add_constraint(from, to) {
+                    return None;
+                }
+                cdt.add_constraint(from, to);
+            }
+            cdt
+        }
+    };
     if cdt.num_vertices() != n || cdt.num_constraints() != n {
         return None;
     }
@@ -137,7 +181,7 @@ pub fn mesh_piece_with_fans(seam: &[[f64; 2]], max_area: f64, fans: &[usize], in
 impl FlatMesh {
     /// Whether this is a triangulated disk (`F = n − 2 + 2I`, Euler) with every seam edge
     /// `k → k+1` on exactly one counter-clockwise triangle and every other edge on two.
-    fn is_disk(&self, n: usize) -> bool {
+    pub(super) fn is_disk(&self, n: usize) -> bool {
         let interior = self.pts.len() - n;
         if self.tris.len() != n - 2 + 2 * interior {
             return false;

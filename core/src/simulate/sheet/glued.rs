@@ -108,12 +108,18 @@ impl SheetMesh {
         let cones = cone_samples(pieces);
         let [pa, pb] = [&pieces.flat[0].pts, &pieces.flat[1].pts];
         let inner = |p: &[[f64; 2]], k: usize| [super::saddle::rows(p, saddles), extra[k].clone()].concat();
-        let a = mesh_piece_with_fans(pa, max_area, &cones, &inner(pa, 0))?;
+        // A mirror-symmetric pair gets mirror-symmetric meshes ([`super::mirror`]).
+        let axis = super::mirror::axis(pieces);
+        let mesh = |p: &[[f64; 2]], inner: &[[f64; 2]]| match axis {
+            Some(j) => super::mirror::mesh_piece_mirrored(p, max_area, &cones, inner, j).or_else(|| mesh_piece_with_fans(p, max_area, &cones, inner)),
+            None => mesh_piece_with_fans(p, max_area, &cones, inner),
+        };
+        let a = mesh(pa, &inner(pa, 0))?;
         // A chord between the same two seam samples in both pieces would bound four triangles:
         // B's is split at its midpoint ([`SHARED_CHORD_SPLITS`]).
         let in_a = seam_chords(&a, n);
         let mut inner = inner(pb, 1);
-        let mut b = mesh_piece_with_fans(pb, max_area, &cones, &inner)?;
+        let mut b = mesh(pb, &inner)?;
         for tries in 0.. {
             let shared: Vec<(usize, usize)> = seam_chords(&b, n).into_iter().filter(|c| in_a.binary_search(c).is_ok()).collect();
             if shared.is_empty() {
@@ -123,7 +129,7 @@ impl SheetMesh {
                 return None;
             }
             inner.extend(shared.iter().map(|&(i, j)| [(pb[i][0] + pb[j][0]) / 2.0, (pb[i][1] + pb[j][1]) / 2.0]));
-            b = mesh_piece_with_fans(pb, max_area, &cones, &inner)?;
+            b = mesh(pb, &inner)?;
         }
         let meshes: [FlatMesh; 2] = [a, b];
         let ia = meshes[0].pts.len() - n;

@@ -37,8 +37,9 @@
 //! bending energy 6.6 times the other's. The same peanut built as the tests build outlines
 //! (`polar`, 24–200 points, 16 offsets) is solved by the convex path every time, so the failure
 //! hangs on the input's last bits. And the thin limit of a pair with a reflex corner creases the
-//! circle along a short line across its inside (the L, the dart and a heart drawn with corners,
-//! each with a circle; the rounded star between its arms): about 18 mm long on the L, 30–35 mm
+//! circle along a short line across its inside (the L and the dart, each with a circle, and the
+//! rounded star between its arms; the heart drawn with corners did too until its meshes were
+//! made mirror-symmetric, [`mirror`], and now bends by 85°): about 18 mm long on the L, 30–35 mm
 //! from its reflex corner, bent by 110–123° between two triangles. It is the equilibrium's, not
 //! the path's or the mesh's: thinning in four times smaller steps, every twin share, 128 and 256
 //! seam vertices and interior edges of 6.3, 4.7 and 3.1 mm end in the same crease (104–123°);
@@ -117,6 +118,7 @@
 //! sheets pushing each other back where they touch ([`contact`]).
 //!
 //! - [`flatmesh`]: each piece meshed by constrained Delaunay refinement, seam samples kept;
+//! - [`mirror`]: a mirror-symmetric pair's pieces meshed as a half and its reflection;
 //! - [`saddle`]: the rows of vertices beside the seam where it is a saddle;
 //! - [`adapt`]: the mesh refined where the thin sheet stays stretched or folds;
 //! - [`retry`]: the homotopy followed again at other bending weights when the sheet ends far off;
@@ -140,6 +142,7 @@ pub mod glued;
 pub mod hinge;
 pub mod homotopy;
 pub mod level;
+pub mod mirror;
 pub mod morph;
 pub mod refine;
 pub mod retry;

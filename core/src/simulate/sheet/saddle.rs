@@ -26,7 +26,7 @@
 //! homotopy 60 % strained).
 
 use super::glued::CONE_DEFECT;
-use super::flatmesh::{interior_angle, outline, seam_step};
+use super::flatmesh::{interior_angle, mean_step, outline, seam_step};
 use crate::simulate::seam::SeamPieces;
 use kurbo::{Line, ParamCurveNearest, Point, Shape};
 use std::f64::consts::TAU;
@@ -64,7 +64,7 @@ pub fn samples(pieces: &SeamPieces) -> Vec<usize> {
 /// that had converged locked (4.7e-3 and 5.5e-3 strain).
 pub fn rows(seam: &[[f64; 2]], at: &[usize]) -> Vec<[f64; 2]> {
     let n = seam.len();
-    let mean = (0..n).map(|j| (seam[j][0] - seam[(j + 1) % n][0]).hypot(seam[j][1] - seam[(j + 1) % n][1])).sum::<f64>() / n as f64;
+    let mean = mean_step(seam);
     let shape = outline(seam);
     let mut out = Vec::new();
     for &k in at {
@@ -86,7 +86,7 @@ fn point(q: [f64; 2]) -> Point {
 }
 
 /// Distance from `q` to the segment `a–b`.
-fn distance_to_edge(q: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+pub(super) fn distance_to_edge(q: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     Line::new(point(a), point(b)).nearest(point(q), 0.0).distance_sq.sqrt()
 }
 
