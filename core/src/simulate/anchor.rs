@@ -58,10 +58,14 @@ use kurbo::{ParamCurve, Point};
 /// that any drawn difference is not.
 pub const DISTANCE_BITS: i32 = 30;
 
-/// How far (relative to the outline's size) a knot may lie from its mirror image's reflection
-/// for an outline to count as mirror-symmetric ([`canonical_start`]): the rounding of a drawing
-/// made symmetric (reflected in the editor, or drawn from a formula), not a hand's.
-pub const MIRROR_TOLERANCE: f64 = 1e-9;
+/// How far (relative to the outline's size, its farthest anchor's distance from their mean) a
+/// knot may lie from its mirror image's reflection for an outline to count as
+/// mirror-symmetric ([`canonical_start`]): 0.01 mm on a piece of 100 mm, finer than any cutter
+/// can tell. A drawing made symmetric (reflected in the editor, or drawn from a formula) is so
+/// to the bit in Illustrator, but a file rounds it: Inkscape writes 8 significant digits, so a
+/// dented ellipse placed at (350, 420) on its page came back 7e-6 mm off, and at 1e-9 it was no
+/// longer symmetric (its form 1 % of its size off its mirror image).
+pub const MIRROR_TOLERANCE: f64 = 1e-4;
 
 /// Where an outline's seam starts: at a knot, or at parameter `t` of the segment from knot `k`
 /// to the next (its middle, `t = ½`, where a mirror axis crosses it).
