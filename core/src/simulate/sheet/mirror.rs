@@ -104,13 +104,13 @@ fn graded(from: [f64; 2], to: [f64; 2], step: &dyn Fn([f64; 2]) -> f64, fine: f6
     out
 }
 
-/// [`super::flatmesh::mesh_piece_with_fans`] made mirror-symmetric about the axis through samples `j` and
-/// `j + n/2` of the counter-clockwise polygon `seam` (which [`axis`] found symmetric): the half
-/// from `j` to `j + n/2` is meshed with the axis chord as its boundary and reflected. The fans
-/// at seam samples and the points `inner` are taken on the half's side and reflected (a point
-/// within half a seam step of the axis is left out, one on it, within [`MIRROR_SAMPLES`], is
-/// kept on the chord). `None`
-/// when the half cannot be meshed or the whole is not a triangulated disk.
+/// [`super::flatmesh::mesh_piece_with_fans`] made mirror-symmetric about the axis through
+/// samples `j` and `j + n/2` of the counter-clockwise polygon `seam` (which [`axis`] found
+/// symmetric): the half from `j` to `j + n/2` is meshed with the axis chord as its boundary and
+/// reflected. The fans at seam samples and the points `inner` are taken on the half's side and
+/// reflected: a point on the axis (within [`MIRROR_SAMPLES`] of a seam step) is kept on the
+/// chord, one off it but within half a seam step of it is left out. `None` when the half cannot
+/// be meshed or the whole is not a triangulated disk.
 pub fn mesh_piece_mirrored(seam: &[[f64; 2]], max_area: f64, fans: &[usize], inner: &[[f64; 2]], j: usize) -> Option<FlatMesh> {
     let n = seam.len();
     if n < 4 || n % 2 != 0 || j >= n {
