@@ -186,17 +186,14 @@ fn spread(kappa_in: &mut [f64], total: f64, a: (f64, f64), b: (f64, f64)) {
         return;
     }
     let at = |x: f64| if len > 0.0 { a.1 + (b.1 - a.1) * ((x - a.0) / len).clamp(0.0, 1.0) } else { a.1.max(b.1) };
+    // The bins from the one holding `a.0` to the one holding its end (past the seam's end they
+    // wrap round), at most once round.
     let first = ((a.0 / bin).max(0.0) as usize).min(bins - 1);
-    for j in first.. {
+    let last = (((a.0 + len) / bin) as usize).clamp(first, first + bins);
+    for j in first..=last {
         let (lo, hi) = ((j as f64 * bin).max(a.0), ((j + 1) as f64 * bin).min(a.0 + len));
-        if j > first && lo > hi {
-            break;
-        }
         let slot = &mut kappa_in[j % bins];
         *slot = slot.max(at(lo)).max(at(hi.max(lo)));
-        if j >= first + bins {
-            break;
-        }
     }
 }
 
