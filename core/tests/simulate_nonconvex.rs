@@ -306,7 +306,7 @@ fn test_issue_14_mirror_symmetric_dented_pair_on_the_sheet_path_is_mirror_symmet
         let m = s.seam.len();
         let x = &s.vertices;
         let d = |i: usize, j: usize| norm(sub(x[s.seam[i]], x[s.seam[j]]));
-        let size = (0..m).map(|k| d(0, k)).fold(0.0, f64::max);
+        let size = seam_reach(&s);
         let (mut worst, mut at) = (0.0f64, 0);
         for k in 1..m / 2 {
             let gap = (d(0, k) - d(0, m - k)).abs();
@@ -768,6 +768,12 @@ fn test_issue_14_a_shallower_bay_avoids_the_crease_that_rounded_corners_keep() {
     assert_eq!(shallow, Ok(()), "the drawn heart, dip 6 mm deep: wanted the D-form ({why})");
 }
 
+/// The form's size for the symmetry tests: the largest distance from the first seam vertex to
+/// another.
+fn seam_reach(s: &Simulation) -> f64 {
+    (0..s.seam.len()).map(|k| norm(sub(s.vertices[s.seam[0]], s.vertices[s.seam[k]]))).fold(0.0, f64::max)
+}
+
 /// The plane through which `s`'s seam is its own mirror image best: over the axes through a
 /// seam vertex or an edge's middle (`c` half-steps round), the pairs `X_{c/2+k}`, `X_{c/2−k}`;
 /// the plane's normal is the direction their differences are most along (power iteration on
@@ -824,7 +830,7 @@ fn test_issue_14_symmetric_drawings_with_a_circle_give_mirror_symmetric_forms() 
     for (name, a) in [("five-lobed", shapes::five_lobed()), ("heart", shapes::heart()), ("drawn heart", shapes::drawn_heart()), ("rounded star", shapes::rounded_star()), ("dart", shapes::dart())] {
         for n in [128, 256] {
             let s = run(&a, &shapes::circle_for(&a), 0.0, n, 10_000);
-            let size = (0..s.seam.len()).map(|k| norm(sub(s.vertices[s.seam[0]], s.vertices[s.seam[k]]))).fold(0.0, f64::max);
+            let size = seam_reach(&s);
             let (v, offset, seam_gap) = mirror_plane(&s);
             println!("{name} at {n}: seam {seam_gap:.2e} mm from its mirror image, size {size:.0} mm, {} vertices", s.vertices.len());
             assert!(seam_gap <= 1e-5 * size, "{name} at {n}: wanted the seam within 1e-5 of {size:.0} mm of its mirror image, got {seam_gap:.3e} mm");
@@ -854,7 +860,7 @@ fn test_issue_14_a_symmetric_drawing_saved_to_eight_digits_keeps_a_symmetric_for
     let off = placed.knots().iter().zip(saved.knots()).map(|(a, b)| a.anchor.distance(b.anchor)).fold(0.0, f64::max);
     assert!(off > 0.0, "the saved drawing must differ from the exact one");
     let s = run(&saved, &shapes::circle_for(&saved), 0.0, 128, 10_000);
-    let size = (0..s.seam.len()).map(|k| norm(sub(s.vertices[s.seam[0]], s.vertices[s.seam[k]]))).fold(0.0, f64::max);
+    let size = seam_reach(&s);
     let (_, _, gap) = mirror_plane(&s);
     println!("saved {off:.2e} mm off the exact drawing; the seam {gap:.2e} mm from its mirror image, size {size:.0} mm");
     assert!(gap <= 1e-5 * size, "wanted the seam within 1e-5 of {size:.0} mm of its mirror image, got {gap:.3e} mm");
