@@ -21,19 +21,6 @@ fn run(a: &Contour, b: &Contour, offset: f64) -> Simulation {
     simulate(a, b, &SimulateOptions { offset, resolution: 256, ..Default::default() }).expect("simulate")
 }
 
-/// Each seam vertex's flat position on piece `piece` (from the triangles of that piece).
-fn seam_flat(s: &Simulation, piece: u8) -> Vec<[f64; 2]> {
-    let mut at = vec![[f64::NAN; 2]; s.vertices.len()];
-    for ((t, f), &p) in s.triangles.iter().zip(&s.flat).zip(&s.piece) {
-        if p == piece {
-            for (&v, &q) in t.iter().zip(f) {
-                at[v] = q;
-            }
-        }
-    }
-    s.seam.iter().map(|&v| at[v]).collect()
-}
-
 /// The point of `c` at arc length `t` from its first anchor, walked clockwise (y up) whatever
 /// way `c` runs, as the seam walks B.
 fn clockwise_at(c: &Contour, t: f64) -> Point {

@@ -288,3 +288,16 @@ pub fn seam_angles(s: &Simulation) -> Vec<(usize, f64)> {
 pub fn largest_seam_angle(s: &Simulation) -> f64 {
     seam_angles(s).into_iter().map(|(_, a)| a).fold(0.0, f64::max)
 }
+
+/// Each seam vertex's flat position on piece `piece` (from the triangles of that piece).
+pub fn seam_flat(s: &Simulation, piece: u8) -> Vec<[f64; 2]> {
+    let mut at = vec![[f64::NAN; 2]; s.vertices.len()];
+    for ((t, f), &p) in s.triangles.iter().zip(&s.flat).zip(&s.piece) {
+        if p == piece {
+            for (&v, &q) in t.iter().zip(f) {
+                at[v] = q;
+            }
+        }
+    }
+    s.seam.iter().map(|&v| at[v]).collect()
+}
