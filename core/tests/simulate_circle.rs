@@ -310,8 +310,11 @@ fn one_form_a_period_on(what: &str, a: &Contour, b: &Contour, turned: [bool; 2],
 /// volume (to the last bit, or for the five lobes, whose five tips the rule cannot tell apart, to
 /// the rounding of the tips' coordinates), and the seam starts at the seam vertex nearest the drawing's first anchor.
 /// Without a circle the offset belongs to the start: the kidney with a 2:1 ellipse, started
-/// `d` further along, is the same gluing at the offset less `d`, and gives the same form with
-/// every seam vertex gluing A's point at arc length `t` to B's at `t + s`.
+/// `d` further along, is the same gluing at the offset plus `d`, and gives the same form with
+/// every seam vertex gluing A's point at arc length `t` to B's at `t + s`; and so does the
+/// second piece started at another knot (regression, stop 51: the second piece's first anchor
+/// was its frame's origin, and the five lobes with the kidney second at 3/10 of the perimeter
+/// gave 241,864 mm³ with the kidney drawn from its first knot, 243,155 from its 17th).
 #[test]
 fn test_issue_14_where_the_outline_starts_does_not_change_the_form() {
     for (name, a) in [("kidney", shapes::kidney()), ("five lobes", shapes::five_lobed()), ("heart", shapes::heart()), ("Pebble", shapes::pebble())] {
@@ -341,20 +344,27 @@ fn test_issue_14_where_the_outline_starts_does_not_change_the_form() {
     let a = shapes::kidney();
     let per = shapes::perimeter(&a);
     let b = shapes::with_perimeter(&shapes::circle(1.0, 8).transformed(Affine::scale_non_uniform(2.0, 1.0)), per);
-    let base = run(&a, &b, 0.125 * per);
-    for k in [17, 50] {
-        let what = format!("kidney + 2:1 ellipse started at knot {k}");
-        let drawn = a.started_at(k);
-        let along = ArcTable::new(&a, 1e-13).segment_start(k);
-        let s = (0.125 * per + along).rem_euclid(per);
-        let got = run(&drawn, &b, s);
+    let lobes = shapes::with_perimeter(&shapes::five_lobed(), per);
+    let along = |c: &Contour, k: usize| ArcTable::new(c, 1e-13).segment_start(k);
+    // B is walked clockwise: started at its drawn knot `k`, its arc length counts from there.
+    let b_along = |c: &Contour, k: usize| if c.signed_area() > 0.0 { along(c, k) } else { -along(c, k) };
+    let cases = [
+        ("kidney + 2:1 ellipse, the kidney started at knot 17", (&a, &b, 0.125), a.started_at(17), b.clone(), along(&a, 17)),
+        ("kidney + 2:1 ellipse, the kidney started at knot 50", (&a, &b, 0.125), a.started_at(50), b.clone(), along(&a, 50)),
+        ("kidney + 2:1 ellipse, the ellipse started at knot 3", (&a, &b, 0.125), a.clone(), b.started_at(3), b_along(&b, 3)),
+        ("five lobes + kidney, the kidney started at knot 17", (&lobes, &a, 0.3), lobes.clone(), a.started_at(17), b_along(&a, 17)),
+    ];
+    for (what, (base_a, base_b, share), drawn_a, drawn_b, d) in cases {
+        let base = run(base_a, base_b, share * per);
+        let s = (share * per + d).rem_euclid(per);
+        let got = run(&drawn_a, &drawn_b, s);
         let (v, v0) = (volume(&got), volume(&base));
         println!("{what}, offset {:.4} of the perimeter: volume {v:.0}, from knot 0 {v0:.0}", s / per);
         assert!((v - v0).abs() <= 1e-9 * v0, "{what}: volume {v}, from knot 0 {v0}");
         assert_eq!(got.stats.converged, base.stats.converged, "{what}: wanted the verdict from knot 0");
         let mut worst = 0.0f64;
         for (qa, qb) in seam_flat(&got, 0).iter().zip(&seam_flat(&got, 1)).step_by(5) {
-            let want = clockwise_at(&b, arc_of(&drawn, *qa).0 + s);
+            let want = clockwise_at(&drawn_b, arc_of(&drawn_a, *qa).0 + s);
             worst = worst.max((qb[0] - want.x).hypot(qb[1] - want.y));
         }
         assert!(worst <= 1e-6 * per, "{what}: a seam vertex glues points {worst:.2e} from the offset's pairing");
