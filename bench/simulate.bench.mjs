@@ -379,8 +379,9 @@ for (const [name, a] of [['kidney + circle', kidney], ['five-lobed + circle', lo
 // which knot of the first piece is its first anchor, with a circle (a circle's offset is no
 // choice, so every start glues one metric), and which piece is picked first (the same offset
 // glues the same points either way: A's point at t meets B's at t + s walked clockwise, and
-// swapped, B's point at u meets A's at u + s). Each is the same drawing, so the bound is the
-// moved pair's. And a turn-symmetric piece picked first: offsets a period apart glue one metric
+// swapped, B's point at u meets A's at u + s; since stop 51 such a pair is solved in an order
+// of its own, core/src/simulate/picked.rs, so the spread is a check of that: it was 2.9 % for
+// the kidney with the five lobes). Each is the same drawing, so the bound is the moved pair's. And a turn-symmetric piece picked first: offsets a period apart glue one metric
 // and give one form (simulate/round.rs turns A's flat).
 console.log('== bookkeeping (WASM, 256 seam vertices): which knot is first, which piece is first, a turn-symmetric first piece a period on ==');
 {

@@ -79,7 +79,7 @@ pub enum Start {
 
 /// The anchors' mean, each coordinate summed sorted, so that it is the same to the bit
 /// whichever knot the outline starts at.
-fn centre(anchors: &[Point]) -> Point {
+pub(super) fn centre(anchors: &[Point]) -> Point {
     let mean = |f: fn(&Point) -> f64| {
         let mut v: Vec<f64> = anchors.iter().map(f).collect();
         crate::order::sort_f64(&mut v);

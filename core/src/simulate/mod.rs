@@ -93,7 +93,8 @@
 //!   drawn does not change its form; [`anchor`]: a pair with a non-convex piece restarted at
 //!   its outline's canonical start (on a mirror axis when it has one), so that where the drawing
 //!   starts does not either, and solved from a second start when that answer misses a little
-//!   or crosses itself;
+//!   or crosses itself; [`picked`]: such a pair solved in an order of its own and read back in
+//!   the order its pieces were picked, so that which was picked first does not either;
 //!   [`round`]: a circle, whose seam
 //!   offset does not change the form either (solved at offset 0, the circle turned), and a B
 //!   that a turn of 2π/k carries onto itself (solved within the first k-th of the perimeter);
@@ -106,7 +107,7 @@
 //! `solve` ← this module; `stats` reads `mesh` and `checks`; `sheet` reads `convex` (the twins'
 //! polyhedron), `checks`, `stats` and `normal`, and only this module reads `sheet`; `frame`
 //! reads only `contour` and `arclen`, `round` those and this module's `Simulation`, `anchor`
-//! those, `round`, `checks` and `seam`.
+//! those, `round`, `checks` and `seam`; `picked` reads `anchor` and `round`.
 
 pub mod anchor;
 pub mod checks;
@@ -120,6 +121,7 @@ pub mod mesh;
 pub mod metric;
 pub mod normal;
 pub mod options;
+pub mod picked;
 pub mod progress;
 pub mod round;
 pub mod kink;
@@ -129,6 +131,7 @@ pub mod solve;
 pub mod stats;
 pub mod vec3;
 
+use crate::arclen::ArcTable;
 use crate::contour::Contour;
 use mesh::Solution;
 use crate::error::{Error, Result};
@@ -203,10 +206,18 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         sim.stats.ms = timer.elapsed_ms();
         return Ok(sim);
     }
-    // A pair with a non-convex piece is solved from its outline's canonical start ([`anchor`]),
-    // so that where the drawing starts cannot change its form either; when that answer misses
+    // A pair with a non-convex piece is solved in an order of its own ([`picked`]), so that
+    // which piece was picked first cannot change its form; from its first piece's canonical
+    // start ([`anchor`]), so that where the drawing starts cannot either; when that answer misses
     // its promise by a little or passes through itself, from the point half the perimeter round
     // too ([`anchor::retry`]), and the better is kept ([`anchor::better`]).
+    let swap = picked::second_first(a, b);
+    let drawn = if swap {
+        let (pa, pb) = (ArcTable::new(a, seam::SAMPLE_ACCURACY).total(), ArcTable::new(b, seam::SAMPLE_ACCURACY).total());
+        (b, a, options.offset * (pa / pb))
+    } else {
+        drawn
+    };
     let starts = anchor::restarts(drawn.0, drawn.1, drawn.2);
     let solve_from = |k: usize, cap: usize, observe: &mut dyn FnMut(progress::Progress)| -> Result<Simulation> {
         let (ra, rb, offset) = starts[k].as_ref().map_or((drawn.0, drawn.1, drawn.2), |(ra, rb, offset)| (ra, rb, *offset));
@@ -224,6 +235,9 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         let mut after = |p: progress::Progress| observe(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
         let other = solve_from(1, left.min(options::START_MAX_ITERATIONS), &mut after)?;
         sim = anchor::better(sim, other);
+    }
+    if swap {
+        sim = picked::swap_back(sim, a.knots()[0].anchor);
     }
     sim.stats.ms = timer.elapsed_ms();
     Ok(sim)
