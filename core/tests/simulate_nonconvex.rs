@@ -603,7 +603,8 @@ fn test_issue_14_an_l_at_512_seam_vertices_keeps_its_flat_lengths() {
 /// picked the other way keeps the contract: A's interior vertices before B's, A's triangles
 /// first, `seam` counter-clockwise on A from the seam vertex nearest A's first anchor. The
 /// kidney with its mirror image (same area: told apart by the order of its anchors) and a
-/// circle picked first are among the pairs.
+/// circle picked first are among the pairs; and a copy moved on the page, which no key tells
+/// apart, gets the same mesh on the same vertices either way.
 #[test]
 fn test_issue_14_which_piece_is_picked_first_does_not_change_the_form() {
     let k = shapes::kidney();
@@ -625,6 +626,14 @@ fn test_issue_14_which_piece_is_picked_first_does_not_change_the_form() {
         same_triangles_swapped(name, &ab, &ba);
         picked_order_kept(name, &ba, &b);
     }
+    // A copy moved on the page is alike in all the order's keys, so each order is solved as
+    // picked; the copies are the same outline, so that is one solve, and either order gives the
+    // same mesh on the same vertices, the first piece picked in A's place.
+    let copy = k.transformed(kurbo::Affine::translate((200.0, 50.0)));
+    let (ab, ba) = (run(&k, &copy, 5.0 / 16.0, 256, 5000), run(&copy, &k, 5.0 / 16.0, 256, 5000));
+    assert_eq!(ab.triangles, ba.triangles, "kidney + its copy: wanted the same mesh picked the other way round");
+    assert_eq!(ab.vertices, ba.vertices, "kidney + its copy: wanted the same vertices picked the other way round");
+    picked_order_kept("kidney + its copy, the copy first", &ba, &copy);
 }
 
 /// `ba`, the answer for the pieces of `ab` picked the other way round, has the triangles of

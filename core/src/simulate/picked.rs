@@ -43,8 +43,9 @@ const DISTANCE_BITS: i32 = 30;
 ///   the kidney's gluings to its mirror image at 1–15/16 of the perimeter, 14 converge this way
 ///   and 12 the other (256 seam vertices, native).
 ///
-/// Only pieces that are alike in all of that (a copy, or a symmetric piece and its mirror
-/// image) keep the order they were picked in, and they ask for congruent solves either way.
+/// Only pieces that are alike in all of that keep the order they were picked in: one outline
+/// moved or turned (a copy; a symmetric piece's mirror image is one), which the frames
+/// ([`super::frame`]) solve the same either way, the piece picked first in A's place.
 pub fn second_first(a: &Contour, b: &Contour) -> bool {
     let (circle_a, circle_b) = (round::circle(a).is_some(), round::circle(b).is_some());
     if circle_a != circle_b {
