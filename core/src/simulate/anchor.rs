@@ -155,6 +155,13 @@ pub fn canonical_start(c: &Contour) -> Start {
         return start;
     }
     let q: Vec<i64> = d.iter().map(|&x| quantum(x)).collect();
+    Start::Knot(greatest_rotation(&q))
+}
+
+/// The first `k` from which `q` read forward round the outline (`q[k], q[k + 1], …`) is the
+/// greatest sequence; 0 for an empty `q`. Only an index of `q`'s largest value can start it.
+pub(super) fn greatest_rotation(q: &[i64]) -> usize {
+    let m = q.len();
     let top = q.iter().copied().max().unwrap_or(0);
     let mut best: Option<usize> = None;
     for k in (0..m).filter(|&k| q[k] == top) {
@@ -163,7 +170,7 @@ pub fn canonical_start(c: &Contour) -> Start {
             _ => Some(k),
         };
     }
-    Start::Knot(best.unwrap_or(0))
+    best.unwrap_or(0)
 }
 
 /// `c` started at `start`: its knots turned to begin at that knot, or with the segment split

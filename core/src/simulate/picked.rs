@@ -18,7 +18,7 @@
 //! ([`second_first`]), and an answer solved the other way round is read back in the order asked
 //! ([`swap_back`]): picked either way, a pair gets one mesh and form to the last bit.
 
-use super::anchor::centre;
+use super::anchor::{centre, greatest_rotation, DISTANCE_BITS};
 use super::{round, Simulation};
 use crate::contour::Contour;
 use kurbo::Point;
@@ -27,10 +27,6 @@ use kurbo::Point;
 /// ([`second_first`]): far above the round-off of where a piece sits (a copy moved on the
 /// page), far below any drawn difference.
 pub const SAME_AREA: f64 = 1e-9;
-
-/// Relative resolution (of the farthest) at which a piece's anchor distances are compared
-/// ([`second_first`]), as [`super::anchor::DISTANCE_BITS`].
-const DISTANCE_BITS: i32 = 30;
 
 /// Whether the pair (`a`, `b`) is solved as (`b`, `a`). The first piece is, in turn:
 ///
@@ -58,8 +54,9 @@ pub fn second_first(a: &Contour, b: &Contour) -> bool {
     distances(b) < distances(a)
 }
 
-/// `c`'s anchors' distances from their mean, quantized to [`DISTANCE_BITS`] of the farthest,
-/// read counter-clockwise from the rotation that makes the sequence greatest: the same
+/// `c`'s anchors' distances from their mean, quantized to [`DISTANCE_BITS`] of the farthest
+/// (as [`super::anchor::canonical_start`] compares them), read counter-clockwise from the
+/// rotation that makes the sequence greatest ([`greatest_rotation`]): the same
 /// whichever knot `c` starts at and whichever way it runs. Empty for a degenerate outline.
 fn distances(c: &Contour) -> Vec<i64> {
     let mut anchors: Vec<Point> = c.knots().iter().map(|k| k.anchor).collect();
@@ -74,10 +71,8 @@ fn distances(c: &Contour) -> Vec<i64> {
         return Vec::new();
     }
     let q: Vec<i64> = d.iter().map(|&x| (x / far * 2f64.powi(DISTANCE_BITS)).round() as i64).collect();
-    let q = &q;
-    let rotation = move |k: usize| (0..m).map(move |i| q[(k + i) % m]);
-    let best = (1..m).fold(0, |best, k| if rotation(k).gt(rotation(best)) { k } else { best });
-    rotation(best).collect()
+    let best = greatest_rotation(&q);
+    (0..m).map(|i| q[(best + i) % m]).collect()
 }
 
 /// An answer for the pair solved as (B, A) read as the answer for (A, B): each triangle's
