@@ -266,7 +266,7 @@ pub fn restarts(a: &Contour, b: &Contour, offset: f64) -> [Option<Restart>; 2] {
 /// flat lengths), and either by little, no edge strained beyond `near`, or through itself
 /// ([`faces_cross`]) and strained by at most `crossing_below`. Another start is another mesh of
 /// the pieces, and so another draw of the thin sheet's equilibria ([`super::sheet::level`]).
-/// The caller passes the sheet path's own bounds: `near`, its `PATIENT_ABOVE` times the strain
+/// The caller passes the sheet path's own bounds: `near`, its `FAR_ABOVE` times the strain
 /// target (beyond it an answer is far off and has been followed again on other paths already,
 /// `sheet::retry`); `crossing_below`, its `TOUCH_BELOW` (a sheet strained by tens of percent
 /// is crumpled, and another mesh of the same path does not unfold it). An answer stretched by

@@ -230,7 +230,7 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         observe(p)
     })?;
     let left = options.max_iterations.saturating_sub(sim.stats.iterations);
-    if left > 0 && anchor::retry(&sim, sheet::PATIENT_ABOVE * sheet::STRAIN_TARGET, sheet::retry::TOUCH_BELOW) {
+    if left > 0 && anchor::retry(&sim, sheet::FAR_ABOVE * sheet::STRAIN_TARGET, sheet::retry::TOUCH_BELOW) {
         // The second start's stages fill what the first left of the progress bar.
         let mut after = |p: progress::Progress| observe(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
         let other = solve_from(1, left.min(options::START_MAX_ITERATIONS), &mut after)?;
@@ -294,10 +294,10 @@ fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, obs
     if !convex && !solution.converged && left > 0 {
         let mut report = progress::Reporter::new(observe, sheet::STAGES);
         report.stage(sim.stats.max_strain);
-        // A sheet that converged, or ended within `PATIENT_ABOVE` of the strain target, is the
-        // answer: the convex path on a pair with a non-convex piece ends strained by percents.
+        // A sheet that converged, or is not crumpled, is the answer: the convex path on a pair
+        // with a non-convex piece ends strained by percents ([`sheet::CRUMPLED`]).
         let unsettled = match sheet::simulate(&pieces, solution.iterations, left, &mut report) {
-            sheet::Outcome::Sheet(s, strain) if s.stats.converged || strain <= sheet::PATIENT_ABOVE * sheet::STRAIN_TARGET => {
+            sheet::Outcome::Sheet(s, strain) if s.stats.converged || strain <= sheet::CRUMPLED => {
                 sim = s;
                 None
             }

@@ -82,8 +82,8 @@ pub const RESTART_KB: f64 = 1e-6;
 
 /// Largest strain (over [`STRAIN_TARGET`]) of a sheet that is refined: one strained by percents
 /// is not locked but on a wrong equilibrium or through itself (the bound of
-/// [`super::PATIENT_ABOVE`]).
-pub const BELOW: f64 = super::PATIENT_ABOVE;
+/// [`super::FAR_ABOVE`]).
+pub const BELOW: f64 = super::FAR_ABOVE;
 
 /// A folded sheet is refined at both triangles of every edge bent by more than this (radians):
 /// the hinges beside the sharpest bend on a smooth sheet's high-curvature line, which share it

@@ -36,7 +36,7 @@
 
 use super::glued::SheetMesh;
 use super::shell::Shell;
-use super::{adapt, follow, Path, Relaxed, Touch, PATIENT_ABOVE, STRAIN_TARGET};
+use super::{adapt, follow, Path, Relaxed, Touch, FAR_ABOVE, STRAIN_TARGET};
 use crate::simulate::checks::{faces_cross, thickness};
 use crate::simulate::progress::Reporter;
 use crate::simulate::seam::SeamPieces;
@@ -67,7 +67,7 @@ pub const TOUCH: [Touch; 2] = [Touch::Faces, Touch::FacesAndSeam];
 /// is crumpled, not squeezed: contact does not unfold it, and its vertex–face candidates grow
 /// with the crumpling. A fuzz pair (a rounded rectangle with a spiky blob, 128 seam vertices)
 /// ended 231 % strained after 59 s native, 46 % of it in the contact terms.
-pub const TOUCH_BELOW: f64 = 0.2;
+pub const TOUCH_BELOW: f64 = super::CRUMPLED;
 
 /// One path's answer: the mesh it ended on (refined where it was held, [`adapt`]), its shell and
 /// its shape, and whether the sheets cross.
@@ -108,10 +108,10 @@ impl Attempt {
     }
 }
 
-/// Whether an answer is far off: not converged, and strained beyond [`PATIENT_ABOVE`] times the
+/// Whether an answer is far off: not converged, and strained beyond [`FAR_ABOVE`] times the
 /// target, through itself, or flat ([`FLAT`]).
 pub fn far_off(a: &Attempt) -> bool {
-    !a.relaxed.converged && (a.relaxed.max_strain > PATIENT_ABOVE * STRAIN_TARGET || a.crossing || thickness(&a.relaxed.x, a.mesh.n) < FLAT)
+    !a.relaxed.converged && (a.relaxed.max_strain > FAR_ABOVE * STRAIN_TARGET || a.crossing || thickness(&a.relaxed.x, a.mesh.n) < FLAT)
 }
 
 /// Thickness ([`thickness`], relative to the size) below which an unconverged sheet is flat: the
