@@ -11,6 +11,7 @@
 //! polygon is never shorter than the curve, so the budgets add up to at most
 //! `accuracy × polygon ≤ accuracy × perimeter × (polygon / perimeter)`, a ratio near 1.
 
+use crate::libm_ext::LibmExt;
 use crate::contour::Contour;
 use kurbo::{CubicBez, ParamCurve, ParamCurveArclen, ParamCurveDeriv, Point, Vec2};
 
@@ -29,7 +30,7 @@ pub const MAX_ACCURACY: f64 = 0.1;
 #[inline]
 pub fn norm(v: Vec2) -> f64 {
     let s = v.x * v.x + v.y * v.y;
-    if s.is_normal() { s.sqrt() } else { v.x.hypot(v.y) }
+    if s.is_normal() { s.sqrt() } else { v.x.hypot_m(v.y) }
 }
 
 /// Length of the control polygon p0→p1→p2→p3, an upper bound on the arc length. `#[inline]`:
@@ -124,7 +125,7 @@ impl Quadrature {
 
     pub fn new(accuracy: f64) -> Self {
         let radius = |n: i32| {
-            let rho = (Self::K / accuracy).powf(0.5 / n as f64).max(std::f64::consts::SQRT_2);
+            let rho = (Self::K / accuracy).powf_m(0.5 / n as f64).max(std::f64::consts::SQRT_2);
             let r = 0.5 * (rho + 1.0 / rho);
             (r * r, r * r * r * r)
         };
@@ -378,9 +379,9 @@ mod tests {
     fn every_fixed_rule_is_taken_somewhere() {
         let q = Quadrature::new(DEFAULT_ACCURACY);
         let arc = |phi: f64| {
-            let h = 4.0 / 3.0 * (phi / 4.0).tan();
-            let p3 = Point::new(phi.cos(), phi.sin());
-            let c = CubicBez::new(Point::new(1.0, 0.0), Point::new(1.0, h), p3 + Vec2::new(h * phi.sin(), -h * phi.cos()), p3);
+            let h = 4.0 / 3.0 * (phi / 4.0).tan_m();
+            let p3 = Point::new(phi.cos_m(), phi.sin_m());
+            let c = CubicBez::new(Point::new(1.0, 0.0), Point::new(1.0, h), p3 + Vec2::new(h * phi.sin_m(), -h * phi.cos_m()), p3);
             let k = 1.0 / control_polygon_len(&c);
             CubicBez::new(Point::ORIGIN, ((c.p1 - c.p0) * k).to_point(), ((c.p2 - c.p0) * k).to_point(), ((c.p3 - c.p0) * k).to_point())
         };

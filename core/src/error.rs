@@ -3,6 +3,7 @@
 //! never a host's menu: each host replaces those phrases by its own commands from the one table
 //! `messages/commands.json` (Illustrator's Object > Path > Join, Inkscape's Path > Combine…).
 
+use crate::libm_ext::LibmExt;
 use std::fmt;
 
 /// Result alias used across the crate.
@@ -114,7 +115,7 @@ pub fn two_significant(x: f64) -> f64 {
     if !x.is_finite() || x == 0.0 {
         return x;
     }
-    let k = 1 - x.abs().log10().floor() as i32; // digits to keep after the decimal point
+    let k = 1 - x.abs().log10_m().floor() as i32; // digits to keep after the decimal point
     if !(-22..=22).contains(&k) {
         return x;
     }
@@ -127,7 +128,7 @@ pub fn significant(x: f64, digits: i32) -> f64 {
     if !x.is_finite() || x == 0.0 {
         return x;
     }
-    let k = digits - 1 - x.abs().log10().floor() as i32;
+    let k = digits - 1 - x.abs().log10_m().floor() as i32;
     if !(-22..=22).contains(&k) {
         return x;
     }

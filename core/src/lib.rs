@@ -17,6 +17,7 @@ pub mod connect;
 pub mod contour;
 pub mod error;
 pub mod form;
+pub mod libm_ext;
 pub mod measure;
 pub mod normalize;
 pub mod order;

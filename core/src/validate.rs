@@ -19,6 +19,7 @@
 //!   Non-adjacent segments that merely touch at an anchor, and collinear straight segments
 //!   that overlap (lyon reports none for parallel lines), count as intersections.
 
+use crate::libm_ext::LibmExt;
 use crate::arclen::control_polygon_len;
 use crate::contour::Contour;
 use crate::error::{Error, Result};
@@ -184,7 +185,7 @@ fn pair_intersects(a: &Seg, b: &Seg, next: bool, wrap: bool) -> bool {
         half_plane_split(&a.c, &b.c, j)
             || match (cone(&a.c, j), cone(&b.c, j)) {
         (Some(ca), Some(cb)) => {
-            let gap = ca.0.cross(cb.0).atan2(ca.0.dot(cb.0)).abs();
+            let gap = ca.0.cross(cb.0).atan2_m(ca.0.dot(cb.0)).abs();
             gap > ca.1 + cb.1 + 1e-9
         }
         _ => false,
@@ -252,7 +253,7 @@ fn cone(c: &CubicBez, j: Point) -> Option<(Vec2, f64)> {
         .iter()
         .map(|&p| p - j)
         .filter(|v| v.hypot() > DEGENERATE)
-        .map(|v| v.y.atan2(v.x))
+        .map(|v| v.y.atan2_m(v.x))
         .collect();
     if angles.is_empty() {
         return None;
@@ -275,7 +276,7 @@ fn cone(c: &CubicBez, j: Point) -> Option<(Vec2, f64)> {
     }
     // The cone runs from the gap's end to its start (counter-clockwise).
     let mid = gap.2 + span / 2.0;
-    Some((Vec2::new(mid.cos(), mid.sin()), span / 2.0))
+    Some((Vec2::new(mid.cos_m(), mid.sin_m()), span / 2.0))
 }
 
 /// Distance of `p` from the line through `a` with unit direction `u`.

@@ -1,5 +1,6 @@
 //! Small shapes the connectors are drawn with: circles (holes) and the start mark.
 
+use crate::libm_ext::LibmExt;
 use crate::contour::{Contour, Knot};
 use kurbo::{Point, Vec2};
 
@@ -46,7 +47,7 @@ pub fn triangle(apex: Point, toward: Vec2, size: f64) -> Contour {
 /// Text angle in degrees for a label running along the unit tangent `t`, turned by 180° when
 /// needed so the text never reads upside down: the result lies in (−90°, 90°].
 pub fn readable_angle(t: Vec2) -> f64 {
-    let mut a = t.y.atan2(t.x).to_degrees();
+    let mut a = t.y.atan2_m(t.x).to_degrees();
     if a > 90.0 {
         a -= 180.0;
     } else if a <= -90.0 {

@@ -14,6 +14,7 @@
 //! centre into the box's frame, box against the cut line covers the box by square cells and asks
 //! [`Edge::comes_within`] for each cell's circumscribed circle (a sufficient condition).
 
+use crate::libm_ext::LibmExt;
 use super::warnings::Edge;
 use kurbo::{Point, Vec2};
 
@@ -32,7 +33,7 @@ pub struct LabelBox {
 impl LabelBox {
     pub fn new(center: Point, angle_deg: f64, size: f64, chars: usize) -> Self {
         let a = angle_deg.to_radians();
-        LabelBox { center, axis: Vec2::new(a.cos(), a.sin()), half: (0.5 * (CHAR_WIDTH * chars as f64 + MARGIN) * size, 0.5 * size) }
+        LabelBox { center, axis: Vec2::new(a.cos_m(), a.sin_m()), half: (0.5 * (CHAR_WIDTH * chars as f64 + MARGIN) * size, 0.5 * size) }
     }
 
     /// A box from a centre, a unit axis and full extents (slots).
@@ -68,7 +69,7 @@ impl LabelBox {
         let d = c - self.center;
         let (x, y) = (d.dot(self.axis), d.dot(self.axis.turn_90()));
         let (qx, qy) = (x.clamp(-self.half.0, self.half.0), y.clamp(-self.half.1, self.half.1));
-        (x - qx).hypot(y - qy) < r
+        (x - qx).hypot_m(y - qy) < r
     }
 
     /// Whether the cut line comes into the box (see the module comment): one row of cells as
@@ -76,7 +77,7 @@ impl LabelBox {
     pub fn meets_edge(&self, edge: &Edge, scratch: &mut Vec<usize>) -> bool {
         let cols = ((self.half.0 / self.half.1).ceil() as usize).max(1);
         let half_w = self.half.0 / cols as f64;
-        let r = half_w.hypot(self.half.1);
+        let r = half_w.hypot_m(self.half.1);
         (0..cols).any(|i| {
             let x = -self.half.0 + (2 * i + 1) as f64 * half_w;
             edge.comes_within(self.center + self.axis * x, r, scratch)

@@ -24,6 +24,7 @@
 //! shrinks by κ on every side (`n − kerf` by `t − kerf`), so after cutting both have their
 //! nominal sizes and the neck fills the slot exactly.
 
+use crate::libm_ext::LibmExt;
 use super::circle::CIRCLE_K;
 use super::edge::Builder;
 use super::options::{Leaf, Settings};
@@ -145,8 +146,8 @@ pub fn outline(piece: &Walked, connectors: &[f64], set: &Settings) -> Option<(Co
                 let shoulder = c - (h * h - hn * hn).sqrt();
                 b.line_to(on_cut(root0), m * Point::new(-hn, shoulder), k);
                 // From the left shoulder over the top to the right one: clockwise in (T, N).
-                let start = (shoulder - c).atan2(-hn);
-                let end = (shoulder - c).atan2(hn);
+                let start = (shoulder - c).atan2_m(-hn);
+                let end = (shoulder - c).atan2_m(hn);
                 let sweep = -(std::f64::consts::TAU - (end - start).rem_euclid(std::f64::consts::TAU));
                 let arc = kurbo::Arc::new(Point::new(0.0, c), (h, h), start, sweep, 0.0);
                 for el in arc.append_iter(1e-6 * pitch) {

@@ -14,6 +14,7 @@
 //! and an even grid of shifts (see `connect::auto_slide`). Corners are anchors where the tangent turns
 //! by more than [`CORNER_TURN`]; smooth outlines keep `δ = 0`.
 
+use crate::libm_ext::LibmExt;
 use super::piece::Walked;
 use crate::arclen::{control_polygon_len, unit_tangent};
 
@@ -41,7 +42,7 @@ pub fn corner_turns(piece: &Walked, min: f64) -> Vec<(f64, f64, bool)> {
     for (j, &i) in live.iter().enumerate() {
         let prev = live[(j + live.len() - 1) % live.len()];
         let (a, b) = (unit_tangent(table.segment(prev), 1.0), unit_tangent(table.segment(i), 0.0));
-        let turn = a.dot(b).clamp(-1.0, 1.0).acos();
+        let turn = a.dot(b).clamp(-1.0, 1.0).acos_m();
         if turn > min {
             out.push((table.segment_start(i), turn, a.cross(b) * piece.turn > 0.0));
         }

@@ -23,6 +23,7 @@
 //! with the other piece) do not move; only where each piece's hole sits beside its connector
 //! point.
 
+use crate::libm_ext::LibmExt;
 use super::phase::CORNER_TURN;
 use super::piece::Walked;
 
@@ -64,7 +65,7 @@ pub fn windows(piece: &Walked, inset: f64, radius: f64) -> Vec<Window> {
     // The cut of every corner (0 for square, blunter or concave ones: they bound windows only).
     let cuts: Vec<f64> = all
         .iter()
-        .map(|&(_, turn, convex)| if convex && turn > square { inset * (0.5 * turn).tan() } else { 0.0 })
+        .map(|&(_, turn, convex)| if convex && turn > square { inset * (0.5 * turn).tan_m() } else { 0.0 })
         .collect();
     let m = all.len();
     let mut out = Vec::new();
@@ -79,7 +80,7 @@ pub fn windows(piece: &Walked, inset: f64, radius: f64) -> Vec<Window> {
         };
         let share = |len: f64, other: f64| len * cuts[j] / (cuts[j] + other);
         // Interior angle θ = π − turn: sin(θ/2) = cos(turn/2).
-        let gap = GAP * radius / (0.5 * all[j].1).cos().max(1e-3);
+        let gap = GAP * radius / (0.5 * all[j].1).cos_m().max(1e-3);
         let reach = |len: f64, other: f64| {
             let w = (REACH * (cuts[j] + gap)).min(share(len, other));
             if (w - cuts[j] - gap) / w >= MIN_SPACING { w } else { 0.0 }

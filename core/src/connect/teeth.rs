@@ -18,6 +18,7 @@
 //! its crossing of `v = 0` by `κ / sin θ` along the edge. Teeth come out `L/2 + κ` high and
 //! `p/2 + 2κ/sin θ` wide at the seam line before cutting, and exact after.
 
+use crate::libm_ext::LibmExt;
 use super::edge::Builder;
 use super::options::Settings;
 use super::piece::Walked;
@@ -30,7 +31,7 @@ use kurbo::{CubicBez, Point};
 /// bottom, relative to the tooth centre.
 fn tooth(set: &Settings, pitch: f64) -> [(f64, f64); 4] {
     let k = 0.5 * set.kerf;
-    let (sin, cot) = (set.angle.sin(), set.angle.cos() / set.angle.sin());
+    let (sin, cot) = (set.angle.sin_m(), set.angle.cos_m() / set.angle.sin_m());
     let half = 0.25 * pitch + k / sin;
     let (top, bottom) = (0.5 * set.length + k, -0.5 * set.length + k);
     [(-half + bottom * cot, bottom), (-half + top * cot, top), (half - top * cot, top), (half - bottom * cot, bottom)]

@@ -47,6 +47,7 @@
 //!
 //! [`Glue::new`]: super::seam::Glue::new
 
+use crate::libm_ext::LibmExt;
 use super::checks::faces_cross;
 use super::seam::SAMPLE_ACCURACY;
 use super::{round, Shortfall, Simulation};
@@ -308,7 +309,7 @@ pub fn start_seam_at(sim: &mut Simulation, at: Point) {
             }
         }
     }
-    let d = |v: usize| on_a[v].map_or(f64::INFINITY, |q| (q[0] - at.x).hypot(q[1] - at.y));
+    let d = |v: usize| on_a[v].map_or(f64::INFINITY, |q| (q[0] - at.x).hypot_m(q[1] - at.y));
     let first = (0..sim.seam.len()).fold(0, |best, k| if d(sim.seam[k]) < d(sim.seam[best]) { k } else { best });
     sim.seam.rotate_left(first);
 }
@@ -322,7 +323,7 @@ mod tests {
     /// A smooth closed outline through `r(θ)` at `m` equal steps of θ from 0 (Catmull–Rom
     /// handles), first anchor at θ = 0.
     fn polar(m: usize, r: impl Fn(f64) -> f64) -> Contour {
-        let p: Vec<Point> = (0..m).map(|k| k as f64 * TAU / m as f64).map(|t| Point::new(r(t) * t.cos(), r(t) * t.sin())).collect();
+        let p: Vec<Point> = (0..m).map(|k| k as f64 * TAU / m as f64).map(|t| Point::new(r(t) * t.cos_m(), r(t) * t.sin_m())).collect();
         let knots = (0..m).map(|i| {
             let (a, prev, next) = (p[i], p[(i + m - 1) % m], p[(i + 1) % m]);
             let t = (next - prev) / 6.0;
@@ -342,7 +343,7 @@ mod tests {
     /// A `w` × `h` rectangle at the origin with corners rounded by `r` (one cubic per arc),
     /// counter-clockwise, first anchor where the bottom side meets the arc at the origin.
     fn rounded_rect(w: f64, h: f64, r: f64) -> Contour {
-        let k = 4.0 / 3.0 * (TAU / 16.0).tan() * r;
+        let k = 4.0 / 3.0 * (TAU / 16.0).tan_m() * r;
         // Each corner: the tangent point coming in, then the one going out, with the arc's
         // handles along the sides.
         let corners = [((w - r, 0.0), (1.0, 0.0), (w, r), (0.0, 1.0)), ((w, h - r), (0.0, 1.0), (w - r, h), (-1.0, 0.0)), ((r, h), (-1.0, 0.0), (0.0, h - r), (0.0, -1.0)), ((0.0, r), (0.0, -1.0), (r, 0.0), (1.0, 0.0))];
@@ -365,12 +366,12 @@ mod tests {
     /// at the middle of a short side, (0, 25) or (80, 25).
     #[test]
     fn every_first_knot_gives_one_start_on_a_mirror_axis_where_there_is_one() {
-        let kidney = polar(72, |t| 60.0 * (1.0 + 0.35 * (2.0 * t).cos() - 0.25 * t.cos() + 0.2 * (3.0 * t).sin()));
-        let lobes = polar(80, |t| 55.0 * (1.0 + 0.12 * (5.0 * t).sin()));
+        let kidney = polar(72, |t| 60.0 * (1.0 + 0.35 * (2.0 * t).cos_m() - 0.25 * t.cos_m() + 0.2 * (3.0 * t).sin_m()));
+        let lobes = polar(80, |t| 55.0 * (1.0 + 0.12 * (5.0 * t).sin_m()));
         let dented = polar(96, |t| {
-            let r = 1.0 / ((t.cos() / 30.0).powi(2) + (t.sin() / 60.0).powi(2)).sqrt();
+            let r = 1.0 / ((t.cos_m() / 30.0).powi(2) + (t.sin_m() / 60.0).powi(2)).sqrt();
             let d = if t > std::f64::consts::PI { t - TAU } else { t };
-            r - 0.005 * 120.0 * (-(d / 0.25).powi(2)).exp()
+            r - 0.005 * 120.0 * (-(d / 0.25).powi(2)).exp_m()
         });
         let mean = |c: &Contour| {
             let m = c.knots().len() as f64;
@@ -384,7 +385,7 @@ mod tests {
         let cases: [(&str, Contour, Box<dyn Fn(Point) -> bool>); 4] = [
             ("kidney", kidney.clone(), Box::new(move |p| close(p, farthest(&kidney)))),
             ("dented ellipse", dented, Box::new(|p| close(p, Point::new(-30.0, 0.0)))),
-            ("five lobes", lobes, Box::new(|p| ((5.0 * p.y.atan2(p.x)).sin() - 1.0).abs() < 1e-12)),
+            ("five lobes", lobes, Box::new(|p| ((5.0 * p.y.atan2_m(p.x)).sin_m() - 1.0).abs() < 1e-12)),
             ("rounded rectangle", rounded_rect(80.0, 50.0, 10.0), Box::new(|p| close(p, Point::new(0.0, 25.0)) || close(p, Point::new(80.0, 25.0)))),
         ];
         for (what, c, wanted) in cases {

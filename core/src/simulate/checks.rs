@@ -1,6 +1,7 @@
 //! Checks of a solved mesh shared by both paths: dihedral signs (reflex chords), convexity as a
 //! whole, flat folds, folds inside a piece, self-intersection, chords shared by both pieces.
 
+use crate::libm_ext::LibmExt;
 use super::metric::{self, Triangulation};
 use super::vec3::{centroid_and_radius, cross, dot, norm, sub, V3};
 
@@ -220,7 +221,7 @@ pub fn bend(x: &[V3], t: &Triangulation, i: usize, j: usize) -> Option<f64> {
     if norm(n1) == 0.0 || norm(n2) == 0.0 {
         return Some(0.0);
     }
-    Some(norm(cross(n1, n2)).atan2(dot(n1, n2)))
+    Some(norm(cross(n1, n2)).atan2_m(dot(n1, n2)))
 }
 
 /// A bend above this inside a piece is a fold (a crease the sheet cannot take without damage).

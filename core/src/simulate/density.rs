@@ -18,6 +18,7 @@
 //! solver's ladder samples the same `F` and the levels nest. A pair whose weight is 1 everywhere
 //! gets no table at all, and its samples are the even steps bit for bit.
 
+use crate::libm_ext::LibmExt;
 use crate::arclen::ArcTable;
 use kurbo::ParamCurveCurvature;
 
@@ -120,7 +121,7 @@ impl Density {
             return None;
         }
         // Grading, both ways round the closed seam (two rounds reach across the start).
-        let per_bin = |v: f64| (-GRADING * REFERENCE * v / BINS as f64).exp();
+        let per_bin = |v: f64| (-GRADING * REFERENCE * v / BINS as f64).exp_m();
         for _ in 0..2 {
             for b in 1..=BINS {
                 let (p, c) = ((b - 1) % BINS, b % BINS);
@@ -205,10 +206,10 @@ mod tests {
 
     /// A circle of radius `r` by `m` cubic arcs.
     fn circle(r: f64, m: usize) -> Contour {
-        let h = 4.0 / 3.0 * (std::f64::consts::TAU / (4.0 * m as f64)).tan() * r;
+        let h = 4.0 / 3.0 * (std::f64::consts::TAU / (4.0 * m as f64)).tan_m() * r;
         let knots = (0..m)
             .map(|k| {
-                let (s, c) = (std::f64::consts::TAU * k as f64 / m as f64).sin_cos();
+                let (s, c) = (std::f64::consts::TAU * k as f64 / m as f64).sin_cos_m();
                 let a = Point::new(r * c, r * s);
                 Knot { anchor: a, left: Point::new(a.x + h * s, a.y - h * c), right: Point::new(a.x - h * s, a.y + h * c) }
             })
@@ -232,7 +233,7 @@ mod tests {
         let mut knots = Vec::new();
         for (cx, cy, a0) in [(side - r, r, -1.0), (side - r, side - r, 0.0), (r, side - r, 1.0), (r, r, 2.0)] {
             let a0 = a0 * std::f64::consts::FRAC_PI_2;
-            let (c0, s0, c1, s1) = (a0.cos(), a0.sin(), (a0 + std::f64::consts::FRAC_PI_2).cos(), (a0 + std::f64::consts::FRAC_PI_2).sin());
+            let (c0, s0, c1, s1) = (a0.cos_m(), a0.sin_m(), (a0 + std::f64::consts::FRAC_PI_2).cos_m(), (a0 + std::f64::consts::FRAC_PI_2).sin_m());
             let (p0, p1) = (Point::new(cx + r * c0, cy + r * s0), Point::new(cx + r * c1, cy + r * s1));
             knots.push(Knot { anchor: p0, left: p0, right: Point::new(p0.x - k * s0, p0.y + k * c0) });
             knots.push(Knot { anchor: p1, left: Point::new(p1.x + k * s1, p1.y - k * c1), right: p1 });

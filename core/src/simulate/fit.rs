@@ -3,6 +3,8 @@
 //! centred points `u` of the moving set and `v` of the target, no reflection). Congruent pieces
 //! are told apart with it, B's samples fitted onto A's ([`super::convex::congruent`]).
 
+use crate::libm_ext::LibmExt;
+
 /// A rigid motion of the plane: `p ↦ to + R(p − from)`, `R` the rotation by the angle whose cosine
 /// and sine are `cos`, `sin`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -30,7 +32,7 @@ impl Rigid {
             d += u[0] * v[0] + u[1] * v[1];
             x += u[0] * v[1] - u[1] * v[0];
         }
-        let r = d.hypot(x);
+        let r = d.hypot_m(x);
         (r > 0.0).then(|| Rigid { from, to, cos: d / r, sin: x / r })
     }
 
@@ -50,7 +52,7 @@ mod tests {
     #[test]
     fn recovers_a_turn_and_a_shift_and_never_reflects() {
         let a = [[0.0, 0.0], [4.0, 0.0], [1.0, 3.0]];
-        let (c, s) = (2.5f64.cos(), 2.5f64.sin());
+        let (c, s) = (2.5f64.cos_m(), 2.5f64.sin_m());
         let b: Vec<[f64; 2]> = a.iter().map(|p| [c * p[0] - s * p[1] - 7.0, s * p[0] + c * p[1] + 2.0]).collect();
         let f = Rigid::fit(&a, &b).expect("a fit");
         for (p, q) in a.iter().zip(&b) {
@@ -60,7 +62,7 @@ mod tests {
         assert!((f.cos - c).abs() < 1e-12 && (f.sin - s).abs() < 1e-12, "wanted the angle 2.5, got cos {} sin {}", f.cos, f.sin);
         let mirror: Vec<[f64; 2]> = a.iter().map(|p| [-p[0], p[1]]).collect();
         let g = Rigid::fit(&a, &mirror).expect("a fit");
-        let worst = a.iter().zip(&mirror).map(|(p, q)| { let m = g.apply(*p); (m[0] - q[0]).hypot(m[1] - q[1]) }).fold(0.0, f64::max);
+        let worst = a.iter().zip(&mirror).map(|(p, q)| { let m = g.apply(*p); (m[0] - q[0]).hypot_m(m[1] - q[1]) }).fold(0.0, f64::max);
         assert!(worst > 0.1, "a mirror image is no turned copy, got a residual of {worst}");
         assert!(Rigid::fit(&a, &a[..2]).is_none() && Rigid::fit(&[[1.0, 1.0]; 3], &a).is_none());
     }

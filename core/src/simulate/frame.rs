@@ -33,6 +33,7 @@
 //! host reads back goes back to the input's units and place ([`Frame::to_input`],
 //! [`Frame::length_out`]).
 
+use crate::libm_ext::LibmExt;
 use crate::contour::{Contour, Knot};
 use kurbo::Point;
 
@@ -152,7 +153,7 @@ fn local(moved: &Contour, origin: Point, turn: (f64, f64), unit: f64, piece: usi
     if !(size.is_finite() && size > 0.0) {
         return None;
     }
-    let cell = 2f64.powi((size.log2() + 0.5).ceil() as i32 - GRID_BITS);
+    let cell = 2f64.powi((size.log2_m() + 0.5).ceil() as i32 - GRID_BITS);
     if !cell.is_normal() {
         return None;
     }
@@ -193,12 +194,12 @@ pub fn turn_of(c: &Contour) -> (f64, f64) {
     }
     let spread = ((xx - yy) * (xx - yy) + 4.0 * xy * xy).sqrt();
     let unit = |x: f64, y: f64| {
-        let len = x.hypot(y);
+        let len = x.hypot_m(y);
         (len.is_finite() && len > 0.0).then(|| (x / len, y / len))
     };
     if spread > ANISOTROPY * (xx + yy) && spread.is_finite() {
-        let phi = 0.5 * (2.0 * xy).atan2(xx - yy);
-        let (dc, ds) = (phi.cos(), phi.sin());
+        let phi = 0.5 * (2.0 * xy).atan2_m(xx - yy);
+        let (dc, ds) = (phi.cos_m(), phi.sin_m());
         let scale = 1e-6 * size(c);
         let along = mx * dc + my * ds;
         let across = -mx * ds + my * dc;
@@ -210,10 +211,10 @@ pub fn turn_of(c: &Contour) -> (f64, f64) {
         let (a, b) = (k[i].anchor, k[(i + 1) % k.len()].anchor);
         (b.x - a.x, b.y - a.y)
     }).collect();
-    let longest = chords.iter().map(|&(x, y)| x.hypot(y)).fold(0.0, f64::max);
+    let longest = chords.iter().map(|&(x, y)| x.hypot_m(y)).fold(0.0, f64::max);
     chords
         .iter()
-        .find(|&&(x, y)| x.hypot(y) >= longest * (1.0 - 1e-9))
+        .find(|&&(x, y)| x.hypot_m(y) >= longest * (1.0 - 1e-9))
         .and_then(|&(x, y)| unit(x, y))
         .unwrap_or((1.0, 0.0))
 }
@@ -247,10 +248,10 @@ mod tests {
         let knots = (0..m)
             .map(|k| {
                 let t = std::f64::consts::TAU * k as f64 / m as f64;
-                let r = r0 * (1.0 + 0.2 * (3.0 * t).sin());
-                let a = Point::new(r * t.cos() + 3.3, r * t.sin() - 7.1);
+                let r = r0 * (1.0 + 0.2 * (3.0 * t).sin_m());
+                let a = Point::new(r * t.cos_m() + 3.3, r * t.sin_m() - 7.1);
                 let h = 0.08 * r0;
-                Knot { anchor: a, left: Point::new(a.x + h * t.sin(), a.y - h * t.cos()), right: Point::new(a.x - h * t.sin(), a.y + h * t.cos()) }
+                Knot { anchor: a, left: Point::new(a.x + h * t.sin_m(), a.y - h * t.cos_m()), right: Point::new(a.x - h * t.sin_m(), a.y + h * t.cos_m()) }
             })
             .collect();
         Contour::new(knots, 0).unwrap()

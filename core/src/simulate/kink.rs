@@ -20,6 +20,7 @@
 //! projection onto the far tangent), and the rest of the walk is scaled to the perimeter. A
 //! piece with no kinks is walked by its arc length, bit for bit as before.
 
+use crate::libm_ext::LibmExt;
 use crate::arclen::{unit_tangent, ArcTable};
 use super::seam::CORNER_TURN;
 
@@ -97,7 +98,7 @@ pub fn kinks(t: &ArcTable, corners: &[f64]) -> Vec<Kink> {
         for m in 1..=KINK_PER_SEGMENT {
             let (u0, u1) = ((m - 1) as f64 / KINK_PER_SEGMENT as f64, m as f64 / KINK_PER_SEGMENT as f64);
             let next = unit_tangent(seg, u1);
-            let turn = prev.cross(next).atan2(prev.dot(next));
+            let turn = prev.cross(next).atan2_m(prev.dot(next));
             prev = next;
             if turn.abs() <= CORNER_TURN {
                 continue;
@@ -139,7 +140,7 @@ pub fn kinks(t: &ArcTable, corners: &[f64]) -> Vec<Kink> {
             // Bisect for the tangent at half the turn (the sign of its cross product with the
             // start's tangent turned by half the turn changes there; turns below 2π).
             let (pa, ta) = t.frame_at(t.wrap(a));
-            let half = kurbo::Vec2::new(ta.x * (0.5 * turn).cos() - ta.y * (0.5 * turn).sin(), ta.x * (0.5 * turn).sin() + ta.y * (0.5 * turn).cos());
+            let half = kurbo::Vec2::new(ta.x * (0.5 * turn).cos_m() - ta.y * (0.5 * turn).sin_m(), ta.x * (0.5 * turn).sin_m() + ta.y * (0.5 * turn).cos_m());
             let side = |s: f64| half.cross(t.frame_at(t.wrap(s)).1) * turn.signum();
             let (mut lo, mut hi) = (a, b);
             for _ in 0..60 {

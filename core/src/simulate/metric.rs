@@ -4,6 +4,7 @@
 //! triangles where avoidable) and changed only by legal flips (the new chord must cut a strictly
 //! convex flat quad, so it stays inside the piece).
 
+use crate::libm_ext::LibmExt;
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 
@@ -47,7 +48,7 @@ pub fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
 /// The angle at `a` between `a` → `b` and `a` → `c`, in [0, π].
 pub fn angle(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
     let (u, v) = ([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]]);
-    (u[0] * v[1] - u[1] * v[0]).abs().atan2(u[0] * v[0] + u[1] * v[1])
+    (u[0] * v[1] - u[1] * v[0]).abs().atan2_m(u[0] * v[0] + u[1] * v[1])
 }
 
 /// Relative margin for "strictly" positive areas: a triangle counts as degenerate when its
@@ -70,7 +71,7 @@ pub const STRAIGHT: f64 = 4.0 * super::frame::SNAP_MOVE;
 /// `c` of a polygon of squared size `s2` ([`size2`]): round-off (a relative 1e-12 of `s2`) plus
 /// `b` lying [`STRAIGHT`] of the size off the line a–c.
 pub fn straight_margin(a: [f64; 2], c: [f64; 2], s2: f64) -> f64 {
-    AREA_EPS * s2 + STRAIGHT * s2.sqrt() * (c[0] - a[0]).hypot(c[1] - a[1])
+    AREA_EPS * s2 + STRAIGHT * s2.sqrt() * (c[0] - a[0]).hypot_m(c[1] - a[1])
 }
 
 /// A triangulation of polygon 0..n with counter-clockwise triangles, and the map from each
@@ -331,7 +332,7 @@ mod tests {
     fn circle(n: usize) -> Vec<[f64; 2]> {
         (0..n).map(|k| {
             let t = std::f64::consts::TAU * k as f64 / n as f64;
-            [t.cos(), t.sin()]
+            [t.cos_m(), t.sin_m()]
         }).collect()
     }
 

@@ -56,6 +56,7 @@
 //! the circle) is one; its turned `flat` lies within that of its outline (0.015 mm on a
 //! circle of 55 mm), less than a seam chord's sag (0.004 mm at 256 seam vertices) times four.
 
+use crate::libm_ext::LibmExt;
 use crate::arclen::ArcTable;
 use super::Simulation;
 use crate::contour::Contour;
@@ -115,7 +116,7 @@ pub fn circle(c: &Contour) -> Option<Symmetry> {
     let start = (pts[0] - centre).atan2();
     let round = pts.iter().enumerate().all(|(k, q)| {
         let a = start + sense * TAU * k as f64 / n;
-        let want = Point::new(centre.x + r * a.cos(), centre.y + r * a.sin());
+        let want = Point::new(centre.x + r * a.cos_m(), centre.y + r * a.sin_m());
         q.distance(want) <= TOLERANCE * r
     });
     (round && centre.x.is_finite() && centre.y.is_finite()).then_some(Symmetry { centre, perimeter: p, order: 0 })
@@ -132,7 +133,7 @@ pub fn order(c: &Contour) -> Option<Symmetry> {
     let tolerance = EXACT * p / TAU;
     (2..=MAX_ORDER).rev().find_map(|k| {
         let step = p / k as f64;
-        let (sn, cs) = (sense * TAU / k as f64).sin_cos();
+        let (sn, cs) = (sense * TAU / k as f64).sin_cos_m();
         let turn = |x: f64, y: f64| (cs * x - sn * y, sn * x + cs * y);
         let ahead = |j: usize| table.point_at(p * j as f64 / SAMPLES as f64 + step);
         let centre_of = |idx: &[usize]| {
@@ -218,7 +219,7 @@ impl Turn {
 
     /// `q` turned about the centre.
     pub fn apply(&self, q: [f64; 2]) -> [f64; 2] {
-        let (s, c) = self.angle.sin_cos();
+        let (s, c) = self.angle.sin_cos_m();
         let (x, y) = (q[0] - self.centre.x, q[1] - self.centre.y);
         [self.centre.x + c * x - s * y, self.centre.y + s * x + c * y]
     }
@@ -290,12 +291,12 @@ pub fn canonical(perimeter: f64, clockwise: bool, piece: usize) -> Option<(Conto
         return None;
     }
     let m = CANONICAL_ARCS;
-    let h = 4.0 / 3.0 * (TAU / (4.0 * m as f64)).tan();
+    let h = 4.0 / 3.0 * (TAU / (4.0 * m as f64)).tan_m();
     let knots = |r: f64| -> Vec<crate::contour::Knot> {
         (0..m)
             .map(|k| {
                 let t = TAU * k as f64 / m as f64;
-                let (c, s) = (t.cos(), t.sin());
+                let (c, s) = (t.cos_m(), t.sin_m());
                 let y = if clockwise { -1.0 } else { 1.0 };
                 let at = |x: f64, v: f64| Point::new(r * x - r, y * r * v);
                 crate::contour::Knot { anchor: at(c, s), left: at(c + h * s, s - h * c), right: at(c - h * s, s + h * c) }
@@ -324,7 +325,7 @@ impl Canonical {
 
     /// `q` on the canonical circle's flat piece, placed on the drawn one's.
     pub fn apply(&self, q: [f64; 2]) -> [f64; 2] {
-        let (s, c) = self.angle.sin_cos();
+        let (s, c) = self.angle.sin_cos_m();
         let (x, y) = (q[0] - self.from.x, q[1] - self.from.y);
         [self.to.x + c * x - s * y, self.to.y + s * x + c * y]
     }
@@ -361,11 +362,11 @@ mod tests {
     /// An ellipse with semi-axes `rx`, `ry` by `m` Bézier arcs (handles of the circle's
     /// 4/3·tan(θ/4) rule, stretched), first anchor at (rx, 0), counter-clockwise.
     fn ellipse(rx: f64, ry: f64, m: usize) -> Contour {
-        let h = 4.0 / 3.0 * (TAU / (4.0 * m as f64)).tan();
+        let h = 4.0 / 3.0 * (TAU / (4.0 * m as f64)).tan_m();
         let knots = (0..m)
             .map(|k| {
                 let t = TAU * k as f64 / m as f64;
-                let (c, s) = (t.cos(), t.sin());
+                let (c, s) = (t.cos_m(), t.sin_m());
                 let a = Point::new(rx * c, ry * s);
                 Knot { anchor: a, left: Point::new(a.x + h * rx * s, a.y - h * ry * c), right: Point::new(a.x - h * rx * s, a.y + h * ry * c) }
             })
@@ -413,8 +414,8 @@ mod tests {
             let pts: Vec<Point> = (0..m)
                 .map(|k| {
                     let t = TAU * k as f64 / m as f64;
-                    let r = 55.0 * (1.0 + 0.12 * (5.0 * t).sin()) * (1.0 + bump * (-((t - 1.0) * 8.0).powi(2)).exp());
-                    Point::new(r * t.cos(), r * t.sin())
+                    let r = 55.0 * (1.0 + 0.12 * (5.0 * t).sin_m()) * (1.0 + bump * (-((t - 1.0) * 8.0).powi(2)).exp_m());
+                    Point::new(r * t.cos_m(), r * t.sin_m())
                 })
                 .collect();
             let knots = (0..m)
@@ -426,7 +427,7 @@ mod tests {
                 .collect();
             Contour::new(knots, 0).unwrap()
         };
-        let hexagon = Contour::new((0..6).map(|k| { let t = TAU * k as f64 / 6.0; Knot::corner(Point::new(40.0 * t.cos(), 40.0 * t.sin())) }).collect(), 0).unwrap();
+        let hexagon = Contour::new((0..6).map(|k| { let t = TAU * k as f64 / 6.0; Knot::corner(Point::new(40.0 * t.cos_m(), 40.0 * t.sin_m())) }).collect(), 0).unwrap();
         for (what, c, order) in [("ellipse", ellipse(60.0, 25.0, 8), 2), ("hexagon", hexagon, 6), ("five lobes", flower(0.0), 5)] {
             let c = c.transformed(moved);
             let s = super::order(&c).unwrap_or_else(|| panic!("{what}: wanted order {order}, got none"));
@@ -445,7 +446,7 @@ mod tests {
                 assert!(Point::new(got[0], got[1]).distance(want) < 1e-8 * p, "{what}: turned {got:?}, wanted {want:?}");
             }
         }
-        let egg = Contour::new((0..40).map(|k| { let t = TAU * k as f64 / 40.0; Knot::corner(Point::new(50.0 * t.cos() * (1.0 + 0.1 * t.cos()), 40.0 * t.sin())) }).collect(), 0).unwrap();
+        let egg = Contour::new((0..40).map(|k| { let t = TAU * k as f64 / 40.0; Knot::corner(Point::new(50.0 * t.cos_m() * (1.0 + 0.1 * t.cos_m()), 40.0 * t.sin_m())) }).collect(), 0).unwrap();
         for (what, c) in [("ellipse of five arcs", ellipse(60.0, 25.0, 5)), ("flower with one lobe larger", flower(0.01)), ("egg", egg)] {
             assert_eq!(order(&c), None, "{what}: wanted no symmetry");
         }

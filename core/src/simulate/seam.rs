@@ -13,6 +13,7 @@
 //! its kinks taken as corners ([`Walk`]), which moves the gluing by at most
 //! [`super::kink::KINK_SHIFT`] of the perimeter per kink, and by nothing on a piece without.
 
+use crate::libm_ext::LibmExt;
 use crate::arclen::{unit_tangent, ArcTable};
 use crate::contour::Contour;
 use crate::error::{Error, Result};
@@ -321,7 +322,7 @@ impl SeamPieces {
     /// polygon; the triangulations only use chords that lie inside the piece).
     pub fn chord(&self, p: usize, i: usize, j: usize) -> f64 {
         let (a, b) = (self.flat[p].pts[i], self.flat[p].pts[j]);
-        (a[0] - b[0]).hypot(a[1] - b[1])
+        (a[0] - b[0]).hypot_m(a[1] - b[1])
     }
 }
 
@@ -334,7 +335,7 @@ fn anchor_corners(t: &ArcTable) -> Vec<f64> {
     for (j, &i) in live.iter().enumerate() {
         let prev = live[(j + live.len() - 1) % live.len()];
         let (a, b) = (unit_tangent(t.segment(prev), 1.0), unit_tangent(t.segment(i), 0.0));
-        if a.cross(b).atan2(a.dot(b)).abs() > CORNER_TURN {
+        if a.cross(b).atan2_m(a.dot(b)).abs() > CORNER_TURN {
             out.push(t.segment_start(i));
         }
     }
@@ -351,10 +352,10 @@ mod tests {
     fn circle(p: f64) -> Contour {
         let r = p / std::f64::consts::TAU;
         let th = std::f64::consts::TAU / 16.0;
-        let k = 4.0 / 3.0 * (th / 4.0).tan() * r;
+        let k = 4.0 / 3.0 * (th / 4.0).tan_m() * r;
         let knots = (0..16)
             .map(|i| {
-                let (s, c) = (th * i as f64).sin_cos();
+                let (s, c) = (th * i as f64).sin_cos_m();
                 let a = Point::new(r * c, r * s);
                 Knot { anchor: a, left: Point::new(a.x + k * s, a.y - k * c), right: Point::new(a.x - k * s, a.y + k * c) }
             })
@@ -400,9 +401,9 @@ mod tests {
     #[test]
     fn corners_beyond_the_coarsest_level_become_seam_vertices_at_finer_levels() {
         let m = 48;
-        let r = 100.0 / (2.0 * m as f64 * (std::f64::consts::PI / m as f64).sin());
+        let r = 100.0 / (2.0 * m as f64 * (std::f64::consts::PI / m as f64).sin_m());
         let poly = Contour::new(
-            (0..m).map(|i| Knot::corner(Point::new(r * (std::f64::consts::TAU * i as f64 / m as f64).cos(), r * (std::f64::consts::TAU * i as f64 / m as f64).sin()))).collect(),
+            (0..m).map(|i| Knot::corner(Point::new(r * (std::f64::consts::TAU * i as f64 / m as f64).cos_m(), r * (std::f64::consts::TAU * i as f64 / m as f64).sin_m()))).collect(),
             0,
         )
         .unwrap();

@@ -1,6 +1,7 @@
 //! The solved mesh and the figures that say how true it is. Every figure is measured on the
 //! returned mesh against the flat pieces, independently of the solver's own residuals.
 
+use crate::libm_ext::LibmExt;
 use super::seam::SeamPieces;
 use super::checks::reflex_sine;
 use super::mesh::{make_outward, signed_volume, split_shared_chords, Solution};
@@ -146,7 +147,7 @@ pub fn judge(sim: &mut Simulation, folds: bool) {
 pub fn strain_floor(triangles: &[[usize; 3]], flat: &[[[f64; 2]; 3]], piece: &[u8]) -> f64 {
     let side = |t: usize, m: usize| {
         let (p, q) = (flat[t][m], flat[t][(m + 1) % 3]);
-        (q[0] - p[0]).hypot(q[1] - p[1])
+        (q[0] - p[0]).hypot_m(q[1] - p[1])
     };
     let mut first = super::metric::KeyMap::default();
     let mut floor: f64 = 0.0;
@@ -192,7 +193,7 @@ pub fn bends_inside(x: &[V3], triangles: &[[usize; 3]], piece: &[u8]) -> Vec<Cre
                 Some(&u) if piece[u] == piece[t] => {
                     let (n1, n2) = (normal(u), normal(t));
                     if norm(n1) > 0.0 && norm(n2) > 0.0 {
-                        out.push(Crease { piece: piece[t], vertices: [j, i], bend: norm(cross(n1, n2)).atan2(dot(n1, n2)) });
+                        out.push(Crease { piece: piece[t], vertices: [j, i], bend: norm(cross(n1, n2)).atan2_m(dot(n1, n2)) });
                     }
                 }
                 Some(_) => {}
@@ -209,7 +210,7 @@ pub fn bends_inside(x: &[V3], triangles: &[[usize; 3]], piece: &[u8]) -> Vec<Cre
 /// Angle at `a` in triangle (a, b, c), robust near 0 and π.
 fn angle(a: V3, b: V3, c: V3) -> f64 {
     let (u, v) = (sub(b, a), sub(c, a));
-    norm(cross(u, v)).atan2(dot(u, v))
+    norm(cross(u, v)).atan2_m(dot(u, v))
 }
 
 /// The surface area of `triangles` and, for every vertex of `x`, the sum of its triangles'

@@ -21,6 +21,7 @@
 //! apply; through the normal equations `J² v = J u` it did, but the squared conditioning lost the
 //! final digits and two of the bench's rounded-rectangle gluings stopped converging.
 
+use crate::libm_ext::LibmExt;
 use super::intrinsic::{cos_opposite, Mesh};
 use super::super::vec3::{cross, dot, norm, sub, V3};
 use std::f64::consts::{PI, TAU};
@@ -56,14 +57,14 @@ fn tet(l: [f64; 3], r: [f64; 3], with_gamma: bool) -> Tet {
         let crc = cos_opposite(r[c], l[c], r[a]);
         let (sg, srb, src) = (sin_of(cg), sin_of(crb), sin_of(crc));
         if with_gamma {
-            gamma[a] = cg.acos();
+            gamma[a] = cg.acos_m();
         }
         let cb = (cg - crb * crc) / (srb * src);
         // The dihedral angle at edge a → b, seen at a (the spherical triangle of the three edges).
         let ca = (crc - crb * cg) / (srb * sg);
         real &= cb.abs() < 1.0 + REAL_TOL && ca.abs() < 1.0 + REAL_TOL;
-        beta[a] = cb.clamp(-1.0, 1.0).acos();
-        alpha[a] = ca.clamp(-1.0, 1.0).acos();
+        beta[a] = cb.clamp(-1.0, 1.0).acos_m();
+        alpha[a] = ca.clamp(-1.0, 1.0).acos_m();
     }
     Tet { real, gamma, beta, alpha }
 }
@@ -134,7 +135,7 @@ fn jacobian(mesh: &Mesh, r: &[f64], s: &State) -> Option<(Vec<f64>, Vec<f64>)> {
             let sij = sin_of(cos_opposite(rj, l, ri));
             let sji = sin_of(cos_opposite(ri, l, rj));
             // This triangle's half of the edge's entry: cot α on its side.
-            let v = 1.0 / s.alpha[ti][a].tan() / (l * sij * sji);
+            let v = 1.0 / s.alpha[ti][a].tan_m() / (l * sij * sji);
             let cphi = cos_opposite(l, ri, rj);
             off[mesh.side[ti][a]] += v;
             diag[i] -= cphi * v;
@@ -287,7 +288,7 @@ pub(crate) fn flip_to_delaunay(mesh: &mut Mesh) -> usize {
                 .iter()
                 .map(|&(ti, a)| {
                     let l = mesh.side_lengths(ti);
-                    cos_opposite(l[a], l[(a + 1) % 3], l[(a + 2) % 3]).acos()
+                    cos_opposite(l[a], l[(a + 1) % 3], l[(a + 2) % 3]).acos_m()
                 })
                 .sum();
             if angle > PI + 1e-12 && mesh.flip(e) {

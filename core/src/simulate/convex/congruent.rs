@@ -20,6 +20,7 @@
 //! this path meets. Pieces that are not congruent fail the first test in one pass over the
 //! samples.
 
+use crate::libm_ext::LibmExt;
 use super::super::fit::Rigid;
 use super::super::isometry::{bars, max_strain, STRAIN_TOL};
 use super::super::metric::Triangulation;
@@ -51,13 +52,13 @@ pub(crate) fn flat_layout(pieces: &SeamPieces) -> Option<(Vec<V3>, [Triangulatio
 fn misfit(pieces: &SeamPieces) -> Option<f64> {
     let (a, b) = (&pieces.flat[0].pts, &pieces.flat[1].pts);
     let fit = Rigid::fit(b, a)?;
-    let size = a.iter().map(|p| (p[0] - fit.to[0]).hypot(p[1] - fit.to[1])).fold(0.0, f64::max);
+    let size = a.iter().map(|p| (p[0] - fit.to[0]).hypot_m(p[1] - fit.to[1])).fold(0.0, f64::max);
     if !(size > 0.0) {
         return None;
     }
     let far = a.iter().zip(b).map(|(p, q)| {
         let t = fit.apply(*q);
-        (t[0] - p[0]).hypot(t[1] - p[1])
+        (t[0] - p[0]).hypot_m(t[1] - p[1])
     });
     Some(far.fold(0.0, f64::max) / size)
 }
@@ -69,7 +70,7 @@ mod tests {
 
     fn piece(pts: Vec<[f64; 2]>) -> FlatPiece {
         let n = pts.len();
-        let perimeter = (0..n).map(|k| (pts[(k + 1) % n][0] - pts[k][0]).hypot(pts[(k + 1) % n][1] - pts[k][1])).sum();
+        let perimeter = (0..n).map(|k| (pts[(k + 1) % n][0] - pts[k][0]).hypot_m(pts[(k + 1) % n][1] - pts[k][1])).sum();
         let area = (0..n).map(|k| pts[k][0] * pts[(k + 1) % n][1] - pts[(k + 1) % n][0] * pts[k][1]).sum::<f64>() / 2.0;
         FlatPiece::on_chords(pts, area, perimeter)
     }
@@ -82,16 +83,16 @@ mod tests {
         let n = 24;
         let a: Vec<[f64; 2]> = (0..n)
             .map(|k| std::f64::consts::TAU * k as f64 / n as f64)
-            .map(|t| [60.0 * t.cos() + 6.0 * (2.0 * t).cos(), 30.0 * t.sin()])
+            .map(|t| [60.0 * t.cos_m() + 6.0 * (2.0 * t).cos_m(), 30.0 * t.sin_m()])
             .collect();
-        let (c, s) = (0.7f64.cos(), 0.7f64.sin());
+        let (c, s) = (0.7f64.cos_m(), 0.7f64.sin_m());
         let b: Vec<[f64; 2]> = a.iter().map(|p| [c * p[0] - s * p[1] + 13.0, s * p[0] + c * p[1] - 4.0]).collect();
         let pieces = SeamPieces { n, flat: [piece(a.clone()), piece(b.clone())] };
         let (x, _) = flat_layout(&pieces).expect("a turned copy is a congruent gluing");
         assert!(x.iter().all(|p| p[2] == 0.0), "wanted every vertex in the plane z = 0");
         for i in 0..n {
             for j in 0..n {
-                let flat = (a[j][0] - a[i][0]).hypot(a[j][1] - a[i][1]);
+                let flat = (a[j][0] - a[i][0]).hypot_m(a[j][1] - a[i][1]);
                 let laid = ((x[j][0] - x[i][0]).powi(2) + (x[j][1] - x[i][1]).powi(2) + (x[j][2] - x[i][2]).powi(2)).sqrt();
                 assert!((laid - flat).abs() <= 1e-12 * 60.0, "vertices {i}, {j}: wanted {flat}, got {laid}");
             }

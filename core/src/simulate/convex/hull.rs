@@ -12,6 +12,7 @@
 //! is tried on every rung of the ladder; the brute-force hull it replaces (every triple whose
 //! plane has all points on one side, `O(n⁴)`) was limited to rungs of at most 64 vertices.
 
+use crate::libm_ext::LibmExt;
 use super::super::metric::{self, Triangulation};
 use super::super::seam::SeamPieces;
 use super::super::vec3::{centroid_and_radius, cross, dot, sub, V3};
@@ -137,7 +138,7 @@ pub fn cone_vertices(pieces: &SeamPieces) -> Option<Vec<usize>> {
         let (a, b, c) = (f[(k + n - 1) % n], f[k], f[(k + 1) % n]);
         let (u, v) = ([a[0] - b[0], a[1] - b[1]], [c[0] - b[0], c[1] - b[1]]);
         // Interior angle of the counter-clockwise polygon at b: from b→c round to b→a.
-        let ang = (v[0] * u[1] - v[1] * u[0]).atan2(v[0] * u[0] + v[1] * u[1]);
+        let ang = (v[0] * u[1] - v[1] * u[0]).atan2_m(v[0] * u[0] + v[1] * u[1]);
         if ang < 0.0 { ang + std::f64::consts::TAU } else { ang }
     };
     // Convex pieces only: a reflex corner is a saddle of the surface, not a polyhedron's vertex.

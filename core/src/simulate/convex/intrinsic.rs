@@ -24,6 +24,7 @@
 //! a circle and on congruent rectangles, and the embedding stalled; [`Mesh::multi`] says when a
 //! flip may add a second edge.
 
+use crate::libm_ext::LibmExt;
 use super::super::isometry::{bar_length, Bar};
 use super::super::metric::{self, orient, KeyMap, Triangulation};
 use super::super::seam::SeamPieces;
@@ -333,7 +334,7 @@ impl Mesh {
         if orient(q[2], q[0], q[3]) <= eps || orient(q[3], q[1], q[2]) <= eps {
             return None;
         }
-        Some(Preview { i, j, k, l, d: (pk[0] - pl[0]).hypot(pk[1] - pl[1]), sides: [ki, il, lj, jk], layout: q })
+        Some(Preview { i, j, k, l, d: (pk[0] - pl[0]).hypot_m(pk[1] - pl[1]), sides: [ki, il, lj, jk], layout: q })
     }
 
     /// Replaces edge slot `e` by the other diagonal of its quad, with the length of the quad's
@@ -495,8 +496,8 @@ mod tests {
         for (cx, cy, q) in [(w - r, r, 0.0), (w - r, h - r, 1.0), (r, h - r, 2.0), (r, r, 3.0)] {
             let (a0, a1) = ((q - 1.0) * std::f64::consts::FRAC_PI_2, q * std::f64::consts::FRAC_PI_2);
             let (p0, p1) = (Point::new(cx + r * f64::cos(a0), cy + r * f64::sin(a0)), Point::new(cx + r * f64::cos(a1), cy + r * f64::sin(a1)));
-            knots.push(Knot { anchor: p0, left: p0, right: Point::new(p0.x - k * r * a0.sin(), p0.y + k * r * a0.cos()) });
-            knots.push(Knot { anchor: p1, left: Point::new(p1.x + k * r * a1.sin(), p1.y - k * r * a1.cos()), right: p1 });
+            knots.push(Knot { anchor: p0, left: p0, right: Point::new(p0.x - k * r * a0.sin_m(), p0.y + k * r * a0.cos_m()) });
+            knots.push(Knot { anchor: p1, left: Point::new(p1.x + k * r * a1.sin_m(), p1.y - k * r * a1.cos_m()), right: p1 });
         }
         Contour::new(knots, 0).unwrap()
     }
@@ -507,7 +508,7 @@ mod tests {
         for (ti, &t) in m.tris.iter().enumerate() {
             let l = m.side_lengths(ti);
             for a in 0..3 {
-                sum[t[a]] += cos_opposite(l[(a + 1) % 3], l[a], l[(a + 2) % 3]).acos();
+                sum[t[a]] += cos_opposite(l[(a + 1) % 3], l[a], l[(a + 2) % 3]).acos_m();
             }
         }
         sum

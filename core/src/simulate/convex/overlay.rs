@@ -10,6 +10,7 @@
 //! result is a chord mesh like any other, on more seam vertices than the samples: every one of
 //! its triangles is isometric to its flat triangle, and every vertex is a seam point.
 
+use crate::libm_ext::LibmExt;
 use super::super::metric::{self, orient, Triangulation};
 use super::super::seam::{FlatPiece, SeamPieces};
 use super::super::vec3::{norm, sub, V3};
@@ -68,7 +69,7 @@ fn merge_slivers(mut cycles: Vec<Vec<usize>>, pts: &[[f64; 2]], eps: f64) -> Vec
         let sliver = cycles[c].clone();
         // Along the line: from the first point towards the farthest.
         let far = sliver.iter().copied().max_by(|&u, &v| {
-            let d = |w: usize| (pts[w][0] - pts[sliver[0]][0]).hypot(pts[w][1] - pts[sliver[0]][1]);
+            let d = |w: usize| (pts[w][0] - pts[sliver[0]][0]).hypot_m(pts[w][1] - pts[sliver[0]][1]);
             d(u).total_cmp(&d(v))
         });
         let Some(far) = far else {

@@ -1,6 +1,7 @@
 //! Gluings of two convex polygons: solved on their cone points (and the seam points where a
 //! crease crosses the seam), then laid onto the seam samples.
 
+use crate::libm_ext::LibmExt;
 use super::relax::{relax, Orientation};
 use super::starts::{initial_guess, on_sphere, Start};
 use super::{is_good, multistart, triangulate, Patience};
@@ -298,7 +299,7 @@ pub(crate) fn crossing(small: &SeamPieces, i: usize, j: usize, p: usize, m: usiz
         return None;
     }
     let (s0, s1, r0, r1) = (fp[m], fp[m1], fq[m], fq[m1]);
-    let (ls, lr) = ((s1[0] - s0[0]).hypot(s1[1] - s0[1]), (r1[0] - r0[0]).hypot(r1[1] - r0[1]));
+    let (ls, lr) = ((s1[0] - s0[0]).hypot_m(s1[1] - s0[1]), (r1[0] - r0[0]).hypot_m(r1[1] - r0[1]));
     if ls == 0.0 || lr == 0.0 {
         return None;
     }
@@ -309,7 +310,7 @@ pub(crate) fn crossing(small: &SeamPieces, i: usize, j: usize, p: usize, m: usiz
     // q's interior (left of r0→r1) goes to the right of s0→s1.
     let qj = [s0[0] + al * es[0] + be * es[1], s0[1] + al * es[1] - be * es[0]];
     let pi = fp[i];
-    let len = (qj[0] - pi[0]).hypot(qj[1] - pi[1]);
+    let len = (qj[0] - pi[0]).hypot_m(qj[1] - pi[1]);
     // Where segment pi→qj meets the line s0→s1 (fraction t along it).
     let (o1, o2) = (metric::orient(s0, s1, pi), metric::orient(s0, s1, qj));
     if !(o1 > 0.0 && o2 < 0.0) {

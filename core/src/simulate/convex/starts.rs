@@ -1,6 +1,7 @@
 //! Starting shapes of the multistart: saddles, the fourfold start, the chord-mismatch start, a
 //! warm start resampled, a coarser level laid onto a finer one, points pushed onto a sphere.
 
+use crate::libm_ext::LibmExt;
 use super::super::metric::Triangulation;
 use super::super::seam::SeamPieces;
 use super::super::vec3::{centroid, map_affine, norm, size, sub, V3};
@@ -40,8 +41,8 @@ pub(crate) fn initial_guess(pieces: &SeamPieces, start: Start) -> Vec<V3> {
         sc += u[0] * v[0] + u[1] * v[1];
         ss += v[0] * u[1] - v[1] * u[0];
     }
-    let th = ss.atan2(sc);
-    let (c, s) = (th.cos(), th.sin());
+    let th = ss.atan2_m(sc);
+    let (c, s) = (th.cos_m(), th.sin_m());
     let flat: Vec<[f64; 2]> = (0..n)
         .map(|k| {
             let v = [b[k][0] - cb[0], b[k][1] - cb[1]];
@@ -59,7 +60,7 @@ pub(crate) fn initial_guess(pieces: &SeamPieces, start: Start) -> Vec<V3> {
             let j = (i + m) % n;
             let (da, db) = (pieces.chord(0, i, j), pieces.chord(1, i, j));
             let u = [flat[j][0] - flat[i][0], flat[j][1] - flat[i][1]];
-            let l = u[0].hypot(u[1]);
+            let l = u[0].hypot_m(u[1]);
             if l == 0.0 {
                 continue;
             }
@@ -72,7 +73,7 @@ pub(crate) fn initial_guess(pieces: &SeamPieces, start: Start) -> Vec<V3> {
         }
     }
     let (hx, hxy) = ((mxx - myy) / 2.0, mxy); // trace-free part [[hx, hxy], [hxy, -hx]]
-    let lam = hx.hypot(hxy);
+    let lam = hx.hypot_m(hxy);
     let r2 = flat.iter().map(|p| p[0] * p[0] + p[1] * p[1]).sum::<f64>() / n as f64;
     let r = r2.sqrt();
     let delta = if total > 0.0 { lam / (total / 2.0) } else { 0.0 };
@@ -82,7 +83,7 @@ pub(crate) fn initial_guess(pieces: &SeamPieces, start: Start) -> Vec<V3> {
         // The fourfold start: z = |lift|·r/10 · (ρ/r) cos 4θ.
         return flat
             .iter()
-            .map(|p| [p[0], p[1], -0.1 * lift * p[0].hypot(p[1]) * (4.0 * p[1].atan2(p[0])).cos()])
+            .map(|p| [p[0], p[1], -0.1 * lift * p[0].hypot_m(p[1]) * (4.0 * p[1].atan2_m(p[0])).cos_m()])
             .collect();
     }
     flat.iter()

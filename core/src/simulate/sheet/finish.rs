@@ -2,6 +2,7 @@
 //! returned mesh against the flat pieces (as [`crate::simulate::stats`] does for the
 //! seam-vertex polyhedron).
 
+use crate::libm_ext::LibmExt;
 use super::hinge;
 use super::shell::Shell;
 use super::glued::SheetMesh;
@@ -101,7 +102,7 @@ pub fn simulation(pieces: &SeamPieces, mesh: &SheetMesh, shell: &Shell, x: &[V3]
     let reflex_edges = shell
         .hinges
         .iter()
-        .filter(|h| (-hinge::angle(x[h.v[0]], x[h.v[1]], x[h.v[2]], x[h.v[3]])).sin() > REFLEX_REPORT)
+        .filter(|h| (-hinge::angle(x[h.v[0]], x[h.v[1]], x[h.v[2]], x[h.v[3]])).sin_m() > REFLEX_REPORT)
         .count();
     let stats = Stats {
         max_strain,

@@ -8,6 +8,7 @@
 //! other piece, whose samples are fixed by the gluing. With short boundary edges and a larger
 //! allowed area the triangles grow away from the seam, which is where a D-form bends most.
 
+use crate::libm_ext::LibmExt;
 use crate::order::pair_key;
 use crate::simulate::metric::KeyMap;
 use spade::{AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation as _};
@@ -40,7 +41,7 @@ pub fn interior_angle(p: &[[f64; 2]], k: usize) -> f64 {
     let n = p.len();
     let (a, b, c) = (p[(k + n - 1) % n], p[k], p[(k + 1) % n]);
     let (u, v) = ([c[0] - b[0], c[1] - b[1]], [a[0] - b[0], a[1] - b[1]]);
-    let t = (u[0] * v[1] - u[1] * v[0]).atan2(u[0] * v[0] + u[1] * v[1]);
+    let t = (u[0] * v[1] - u[1] * v[0]).atan2_m(u[0] * v[0] + u[1] * v[1]);
     if t <= 0.0 { t + std::f64::consts::TAU } else { t }
 }
 
@@ -48,13 +49,13 @@ pub fn interior_angle(p: &[[f64; 2]], k: usize) -> f64 {
 pub fn seam_step(p: &[[f64; 2]], k: usize) -> f64 {
     let n = p.len();
     let (a, b, c) = (p[(k + n - 1) % n], p[k], p[(k + 1) % n]);
-    0.5 * ((a[0] - b[0]).hypot(a[1] - b[1]) + (c[0] - b[0]).hypot(c[1] - b[1]))
+    0.5 * ((a[0] - b[0]).hypot_m(a[1] - b[1]) + (c[0] - b[0]).hypot_m(c[1] - b[1]))
 }
 
 /// Mean edge length of the closed polygon `p` (its mean seam step).
 pub fn mean_step(p: &[[f64; 2]]) -> f64 {
     let n = p.len();
-    (0..n).map(|k| (p[k][0] - p[(k + 1) % n][0]).hypot(p[k][1] - p[(k + 1) % n][1])).sum::<f64>() / n as f64
+    (0..n).map(|k| (p[k][0] - p[(k + 1) % n][0]).hypot_m(p[k][1] - p[(k + 1) % n][1])).sum::<f64>() / n as f64
 }
 
 /// The closed polygon `p` as a kurbo path, for kurbo's point-in-shape test (non-zero winding).
@@ -128,10 +129,10 @@ pub(super) fn mesh_polygon(seam: &[[f64; 2]], max_area: f64, fans: &[usize], inn
         let h = seam_step(seam, k);
         let angle = interior_angle(seam, k);
         let parts = (angle / FAN_ANGLE).ceil() as usize;
-        let start = (c[1] - b[1]).atan2(c[0] - b[0]);
+        let start = (c[1] - b[1]).atan2_m(c[0] - b[0]);
         for j in 1..parts {
             let t = start + angle * j as f64 / parts as f64;
-            let q = [b[0] + h * t.cos(), b[1] + h * t.sin()];
+            let q = [b[0] + h * t.cos_m(), b[1] + h * t.sin_m()];
             if !outline.as_ref().is_some_and(|o| kurbo::Shape::contains(o, kurbo::Point::new(q[0], q[1]))) {
                 continue;
             }
@@ -223,8 +224,8 @@ mod tests {
         let seam: Vec<[f64; 2]> = (0..n)
             .map(|k| {
                 let t = std::f64::consts::TAU * k as f64 / n as f64;
-                let r = 50.0 * (1.0 + 0.35 * (2.0 * t).cos() - 0.25 * t.cos());
-                [r * t.cos(), r * t.sin()]
+                let r = 50.0 * (1.0 + 0.35 * (2.0 * t).cos_m() - 0.25 * t.cos_m());
+                [r * t.cos_m(), r * t.sin_m()]
             })
             .collect();
         let area = polygon_area(&seam);
@@ -257,7 +258,7 @@ mod tests {
                 let (a, b) = (m.pts[t[(k + 1) % 3]], m.pts[t[(k + 2) % 3]]);
                 let o = m.pts[c];
                 let (u, v) = ([a[0] - o[0], a[1] - o[1]], [b[0] - o[0], b[1] - o[1]]);
-                let angle = (u[0] * v[1] - u[1] * v[0]).atan2(u[0] * v[0] + u[1] * v[1]).to_degrees();
+                let angle = (u[0] * v[1] - u[1] * v[0]).atan2_m(u[0] * v[0] + u[1] * v[1]).to_degrees();
                 assert!(angle <= 30.0 + 1e-9, "corner {c}: wanted fan angles ≤ 30°, got {angle:.2}°");
                 total += angle;
             }

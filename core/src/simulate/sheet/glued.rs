@@ -1,5 +1,6 @@
 //! The glued mesh of the two meshed pieces and the elastic shell's terms on it.
 
+use crate::libm_ext::LibmExt;
 use super::flatmesh::{interior_angle, mesh_piece_with_fans, FlatMesh};
 use super::shell::{Edge, Hinge, Shell};
 use crate::simulate::seam::SeamPieces;
@@ -156,7 +157,7 @@ impl SheetMesh {
     /// Flat distance between `i` and `j` on piece `p`.
     pub fn rest(&self, p: usize, i: usize, j: usize) -> f64 {
         let (a, b) = (self.flat[p][i], self.flat[p][j]);
-        (a[0] - b[0]).hypot(a[1] - b[1])
+        (a[0] - b[0]).hypot_m(a[1] - b[1])
     }
 
     /// Flat area of triangle `t` of piece `p`.

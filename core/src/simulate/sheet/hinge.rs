@@ -14,6 +14,7 @@
 //! `∂θ/∂x_i = −(1 − t_k)∂θ/∂x_k − (1 − t_l)∂θ/∂x_l`, `∂θ/∂x_j = −t_k ∂θ/∂x_k − t_l ∂θ/∂x_l`
 //! (the gradient is invariant under translations and rotations).
 
+use crate::libm_ext::LibmExt;
 use crate::simulate::vec3::{cross, dot, norm, sub, V3};
 
 /// The signed dihedral angle of hinge `(i, j, k, l)` at positions `x` (see the module docs).
@@ -26,7 +27,7 @@ pub fn angle(xi: V3, xj: V3, xk: V3, xl: V3) -> f64 {
         return 0.0;
     }
     let s = dot(cross(n1, n2), e) / le;
-    s.atan2(dot(n1, n2))
+    s.atan2_m(dot(n1, n2))
 }
 
 /// The angle and its gradient with respect to `x_i, x_j, x_k, x_l`; `None` for a degenerate
@@ -40,7 +41,7 @@ pub fn angle_and_gradient(xi: V3, xj: V3, xk: V3, xl: V3) -> Option<(f64, [V3; 4
         return None;
     }
     let le = le2.sqrt();
-    let theta = (dot(cross(n1, n2), e) / le).atan2(dot(n1, n2));
+    let theta = (dot(cross(n1, n2), e) / le).atan2_m(dot(n1, n2));
     let gk = n1.map(|v| -le * v / a1);
     let gl = n2.map(|v| -le * v / a2);
     let tk = dot(sub(xk, xi), e) / le2;

@@ -17,6 +17,7 @@
 //! seam step at its ends, growing by [`GRADE`] times the distance to the seam, at most the
 //! interior edge.
 
+use crate::libm_ext::LibmExt;
 use super::flatmesh::{mean_step, mesh_polygon, Build, FlatMesh};
 use super::saddle::distance_to_edge;
 use crate::simulate::seam::SeamPieces;
@@ -47,7 +48,7 @@ pub fn axis(pieces: &SeamPieces) -> Option<usize> {
 
 /// Reflection across the line through `a` and `b`.
 fn reflection(a: [f64; 2], b: [f64; 2]) -> Option<impl Fn([f64; 2]) -> [f64; 2]> {
-    let l = (b[0] - a[0]).hypot(b[1] - a[1]);
+    let l = (b[0] - a[0]).hypot_m(b[1] - a[1]);
     if !(l > 0.0) || !l.is_finite() {
         return None;
     }
@@ -68,7 +69,7 @@ fn symmetric(p: &[[f64; 2]], j: usize) -> bool {
     let tolerance = MIRROR_SAMPLES * mean_step(p);
     (1..m).all(|k| {
         let (q, r) = (reflect(p[(j + k) % n]), p[(j + n - k) % n]);
-        (q[0] - r[0]).hypot(q[1] - r[1]) <= tolerance
+        (q[0] - r[0]).hypot_m(q[1] - r[1]) <= tolerance
     })
 }
 
@@ -81,7 +82,7 @@ fn distance_to_polygon(p: &[[f64; 2]], q: [f64; 2]) -> f64 {
 /// Points strictly inside the segment `from → to` (length `l`), at steps graded by `step(x)`:
 /// as many as the integral of `1/step` along it, rounded, spaced evenly in that integral.
 fn graded(from: [f64; 2], to: [f64; 2], step: &dyn Fn([f64; 2]) -> f64, fine: f64) -> Vec<[f64; 2]> {
-    let l = (to[0] - from[0]).hypot(to[1] - from[1]);
+    let l = (to[0] - from[0]).hypot_m(to[1] - from[1]);
     let at = |t: f64| [from[0] + t * (to[0] - from[0]), from[1] + t * (to[1] - from[1])];
     let samples = ((l / fine).ceil() as usize).clamp(1, 4096);
     let mut integral = vec![0.0; samples + 1];
@@ -119,7 +120,7 @@ pub fn mesh_piece_mirrored(seam: &[[f64; 2]], max_area: f64, fans: &[usize], inn
     let m = n / 2;
     let (q0, p0) = (seam[j], seam[(j + m) % n]);
     let reflect = reflection(q0, p0)?;
-    let axis_len = (p0[0] - q0[0]).hypot(p0[1] - q0[1]);
+    let axis_len = (p0[0] - q0[0]).hypot_m(p0[1] - q0[1]);
     let dir = [(p0[0] - q0[0]) / axis_len, (p0[1] - q0[1]) / axis_len];
     let side = |q: [f64; 2]| dir[0] * (q[1] - q0[1]) - dir[1] * (q[0] - q0[0]);
     let sign = side(seam[(j + 1) % n]).signum();
@@ -186,8 +187,8 @@ mod tests {
         (0..n)
             .map(|k| {
                 let t = start + std::f64::consts::TAU * k as f64 / n as f64;
-                let r = 55.0 * (1.0 + 0.12 * (5.0 * t).sin());
-                [r * t.cos(), r * t.sin()]
+                let r = 55.0 * (1.0 + 0.12 * (5.0 * t).sin_m());
+                [r * t.cos_m(), r * t.sin_m()]
             })
             .collect()
     }
@@ -210,13 +211,13 @@ mod tests {
         // Independent of how it was built: reflect every vertex across the line through the
         // samples 0 and n/2 and find it among the vertices.
         let (a, b) = (seam[0], seam[n / 2]);
-        let l = (b[0] - a[0]).hypot(b[1] - a[1]);
+        let l = (b[0] - a[0]).hypot_m(b[1] - a[1]);
         let d = [(b[0] - a[0]) / l, (b[1] - a[1]) / l];
         let mirror_of = |q: [f64; 2]| {
             let along = (q[0] - a[0]) * d[0] + (q[1] - a[1]) * d[1];
             [2.0 * (a[0] + along * d[0]) - q[0], 2.0 * (a[1] + along * d[1]) - q[1]]
         };
-        let find = |q: [f64; 2]| mesh.pts.iter().position(|p| (p[0] - q[0]).hypot(p[1] - q[1]) < 1e-9 * l);
+        let find = |q: [f64; 2]| mesh.pts.iter().position(|p| (p[0] - q[0]).hypot_m(p[1] - q[1]) < 1e-9 * l);
         let image: Vec<usize> = mesh.pts.iter().enumerate().map(|(v, &q)| find(mirror_of(q)).unwrap_or_else(|| panic!("vertex {v} at {q:?}: wanted its reflection among the vertices, got none"))).collect();
         let mut sorted: Vec<[usize; 3]> = mesh.tris.iter().map(|t| { let mut s = *t; s.sort(); s }).collect();
         sorted.sort();

@@ -12,6 +12,7 @@
 //! two closure equations and `Σ Δτ = 0` (three equations, three unknowns; the Jacobian of the
 //! closure in `τ_m` is `i·Σ_{k ≥ m} ℓ_k e^{iφ_k}`, a suffix sum).
 
+use crate::libm_ext::LibmExt;
 use crate::simulate::checks::is_convex_polygon;
 use std::f64::consts::TAU;
 
@@ -50,7 +51,7 @@ impl Morph {
             return None;
         }
         let len: Vec<f64> = (0..n).map(|k| dist(pts[k], pts[(k + 1) % n])).collect();
-        let heading: Vec<f64> = (0..n).map(|k| (pts[(k + 1) % n][1] - pts[k][1]).atan2(pts[(k + 1) % n][0] - pts[k][0])).collect();
+        let heading: Vec<f64> = (0..n).map(|k| (pts[(k + 1) % n][1] - pts[k][1]).atan2_m(pts[(k + 1) % n][0] - pts[k][0])).collect();
         let tau: Vec<f64> = (0..n).map(|k| wrap(heading[k] - heading[(k + n - 1) % n])).collect();
         let total: f64 = tau.iter().sum();
         if (total - TAU).abs() > 1e-6 || len.iter().any(|&l| !(l > 0.0)) {
@@ -93,17 +94,17 @@ impl Morph {
             // Suffix sums S_m = Σ_{k ≥ m} ℓ_k e^{iφ_k}; the gap is S_0.
             let mut suffix = vec![[0.0; 2]; n + 1];
             for k in (0..n).rev() {
-                suffix[k] = [suffix[k + 1][0] + self.len[k] * phi[k].cos(), suffix[k + 1][1] + self.len[k] * phi[k].sin()];
+                suffix[k] = [suffix[k + 1][0] + self.len[k] * phi[k].cos_m(), suffix[k + 1][1] + self.len[k] * phi[k].sin_m()];
             }
             let gap = suffix[0];
-            if gap[0].hypot(gap[1]) <= CLOSURE_TOL * perimeter {
+            if gap[0].hypot_m(gap[1]) <= CLOSURE_TOL * perimeter {
                 return Some(self.polygon(&phi));
             }
             // d gap / d τ_m = i·S_m (m ≥ 1; τ_0 is the closing turn and moves no heading).
             // Unknowns (a, b, c): Δτ_m = w_m (a cos φ_m + b sin φ_m + c), rows: gap x, gap y, ΣΔτ.
             let mut j = [[0.0; 3]; 3];
             for m in 1..n {
-                let basis = [phi[m].cos(), phi[m].sin(), 1.0];
+                let basis = [phi[m].cos_m(), phi[m].sin_m(), 1.0];
                 let d = [-suffix[m][1], suffix[m][0]];
                 for c in 0..3 {
                     j[0][c] += d[0] * w[m] * basis[c];
@@ -114,7 +115,7 @@ impl Morph {
             let sum_err = tau.iter().sum::<f64>() - TAU;
             let coef = solve3(j, [-gap[0], -gap[1], -sum_err])?;
             for m in 1..n {
-                tau[m] += w[m] * (coef[0] * phi[m].cos() + coef[1] * phi[m].sin() + coef[2]);
+                tau[m] += w[m] * (coef[0] * phi[m].cos_m() + coef[1] * phi[m].sin_m() + coef[2]);
             }
             tau[0] = TAU - tau[1..].iter().sum::<f64>();
         }
@@ -137,14 +138,14 @@ impl Morph {
         let mut out = Vec::with_capacity(phi.len());
         for (k, f) in phi.iter().enumerate() {
             out.push(p);
-            p = [p[0] + self.len[k] * f.cos(), p[1] + self.len[k] * f.sin()];
+            p = [p[0] + self.len[k] * f.cos_m(), p[1] + self.len[k] * f.sin_m()];
         }
         out
     }
 }
 
 fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
+    (a[0] - b[0]).hypot_m(a[1] - b[1])
 }
 
 /// An angle wrapped into (−π, π].
@@ -188,8 +189,8 @@ mod tests {
         (0..n)
             .map(|k| {
                 let th = TAU * k as f64 / n as f64;
-                let r = 1.0 + 0.35 * (2.0 * th).cos() - 0.25 * th.cos();
-                [r * th.cos(), r * th.sin()]
+                let r = 1.0 + 0.35 * (2.0 * th).cos_m() - 0.25 * th.cos_m();
+                [r * th.cos_m(), r * th.sin_m()]
             })
             .collect()
     }
@@ -216,7 +217,7 @@ mod tests {
     fn a_convex_polygon_is_its_own_twin() {
         let pts: Vec<[f64; 2]> = (0..64).map(|k| {
             let th = TAU * k as f64 / 64.0;
-            [2.0 * th.cos(), th.sin()]
+            [2.0 * th.cos_m(), th.sin_m()]
         }).collect();
         let m = Morph::new(&pts).unwrap();
         assert_eq!(m.at(0.0).unwrap(), pts, "a convex polygon is its own twin");

@@ -25,6 +25,7 @@
 //! heart with a circle, at 192 seam vertices, whose tip and dip are sharp, came out of a layered
 //! homotopy 60 % strained).
 
+use crate::libm_ext::LibmExt;
 use super::glued::CONE_DEFECT;
 use super::flatmesh::{interior_angle, mean_step, outline, seam_step};
 use crate::simulate::seam::SeamPieces;
@@ -70,9 +71,9 @@ pub fn rows(seam: &[[f64; 2]], at: &[usize]) -> Vec<[f64; 2]> {
     for &k in at {
         let (b, c) = (seam[k], seam[(k + 1) % n]);
         let h = seam_step(seam, k).max(mean);
-        let t = (c[1] - b[1]).atan2(c[0] - b[0]) + interior_angle(seam, k) / 2.0;
+        let t = (c[1] - b[1]).atan2_m(c[0] - b[0]) + interior_angle(seam, k) / 2.0;
         for m in ROWS {
-            let q = [b[0] + m * h * t.cos(), b[1] + m * h * t.sin()];
+            let q = [b[0] + m * h * t.cos_m(), b[1] + m * h * t.sin_m()];
             if shape.contains(point(q)) && (0..n).all(|j| distance_to_edge(q, seam[j], seam[(j + 1) % n]) > 0.5 * h) {
                 out.push(q);
             }
@@ -102,18 +103,18 @@ mod tests {
         let n = 128;
         let circle: Vec<[f64; 2]> = (0..n).map(|k| {
             let t = TAU * k as f64 / n as f64;
-            [50.0 * t.cos(), 50.0 * t.sin()]
+            [50.0 * t.cos_m(), 50.0 * t.sin_m()]
         }).collect();
         // r = 50 − 8·exp(−(θ/0.3)²): concave around θ = 0 only, a dent of the radius there.
         let bay: Vec<[f64; 2]> = (0..n).map(|k| {
             let t = TAU * k as f64 / n as f64;
             let d = (t + std::f64::consts::PI).rem_euclid(TAU) - std::f64::consts::PI;
-            let r = 50.0 - 8.0 * (-(d / 0.3).powi(2)).exp();
-            [r * t.cos(), r * t.sin()]
+            let r = 50.0 - 8.0 * (-(d / 0.3).powi(2)).exp_m();
+            [r * t.cos_m(), r * t.sin_m()]
         }).collect();
         let piece = |pts: Vec<[f64; 2]>| FlatPiece::on_chords(pts, 0.0, 0.0);
         let mut pieces = SeamPieces { n, flat: [piece(circle.clone()), piece(bay.clone())] };
-        let perimeter: f64 = (0..n).map(|k| (circle[k][0] - circle[(k + 1) % n][0]).hypot(circle[k][1] - circle[(k + 1) % n][1])).sum();
+        let perimeter: f64 = (0..n).map(|k| (circle[k][0] - circle[(k + 1) % n][0]).hypot_m(circle[k][1] - circle[(k + 1) % n][1])).sum();
         pieces.flat[0].perimeter = perimeter;
         let at = samples(&pieces);
         assert!(!at.is_empty(), "wanted saddle samples at the bay");
