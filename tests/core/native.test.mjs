@@ -8,6 +8,7 @@ import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
+import { ellipse, kidneyThrough } from './reference.mjs';
 
 const require = createRequire(import.meta.url);
 const m = require(process.env.DFORMER_PKG ?? '../../core/pkg/dformer.js');
@@ -33,24 +34,13 @@ function leaves(v, path = '', out = new Map()) {
   return out;
 }
 
-const smooth = (p) => ({ closed: true, points: p.map((a, i) => {
-  const n = p.length, pr = p[(i + n - 1) % n], nx = p[(i + 1) % n];
-  const t = [(nx[0] - pr[0]) / 6, (nx[1] - pr[1]) / 6];
-  return { anchor: a, left: [a[0] - t[0], a[1] - t[1]], right: [a[0] + t[0], a[1] + t[1]] };
-}) });
-const polar = (n, r) => smooth(Array.from({ length: n }, (_, k) => { const t = (2 * Math.PI * k) / n; return [r(t) * Math.cos(t), r(t) * Math.sin(t)]; }));
-const K = 0.5522847498307936;
-const ellipse = (rx, ry, s = 1) => ({ closed: true, points: [[1, 0], [0, 1], [-1, 0], [0, -1]].map(([x, y]) => {
-  const a = [s * rx * x, s * ry * y], t = [-y * rx * K * s, x * ry * K * s];
-  return { anchor: a, left: [a[0] - t[0], a[1] - t[1]], right: [a[0] + t[0], a[1] + t[1]] };
-}) });
-
 test('test_issue_14_native_and_browser_give_the_same_form: measure, stitch, leaves and simulate agree to the bit', () => {
   // The kidney of issue 14 and a 2:1 ellipse of its perimeter; two 2:1 ellipses.
-  const kidney = polar(72, (t) => 60 * (1 + 0.35 * Math.cos(2 * t) - 0.25 * Math.cos(t) + 0.2 * Math.sin(3 * t)));
+  const kidney = kidneyThrough(72);
   const P = m.measure(kidney).perimeter;
-  const oval = ellipse(1, 0.5, P / m.measure(ellipse(1, 0.5)).perimeter);
-  const e = ellipse(60, 30);
+  const s = P / m.measure(ellipse([0, 0], 1, 0.5)).perimeter;
+  const oval = ellipse([0, 0], s, s / 2);
+  const e = ellipse([0, 0], 60, 30);
   const requests = [
     ['measure the kidney', { op: 'measure', path: kidney }, () => m.measure(kidney)],
     ['stitch holes on the kidney and the oval', { op: 'connect', pieces: [kidney, oval], options: { kind: 'stitch', count: 40 } }, () => m.connect([kidney, oval], { kind: 'stitch', count: 40 })],

@@ -66,6 +66,21 @@ export function ellipse(c, a, b, n = 4, cw = false) {
   return { closed: true, points };
 }
 
+/** The kidney of issue 14, r = 60(1 + 0.35 cos 2θ − 0.25 cos θ + 0.2 sin 3θ), through `n` anchors
+ * with Catmull–Rom tangents (the bench's `polar`). */
+export function kidneyThrough(n) {
+  const rk = (t) => 60 * (1 + 0.35 * Math.cos(2 * t) - 0.25 * Math.cos(t) + 0.2 * Math.sin(3 * t));
+  const pts = Array.from({ length: n }, (_, k) => { const t = (2 * Math.PI * k) / n; return [rk(t) * Math.cos(t), rk(t) * Math.sin(t)]; });
+  return {
+    closed: true,
+    points: pts.map(([x, y], i) => {
+      const p = pts[(i + n - 1) % n], q = pts[(i + 1) % n];
+      const t = [(q[0] - p[0]) / 6, (q[1] - p[1]) / 6];
+      return { anchor: [x, y], left: [x - t[0], y - t[1]], right: [x + t[0], y + t[1]] };
+    }),
+  };
+}
+
 export const polygon = (pts) => ({ closed: true, points: pts.map((a) => ({ anchor: a })) });
 
 /** Ellipse perimeter by the AGM (Gauss–Kummer): 2π/AGM(a,b) · (a² − Σ 2^{n−1} c_n²). */

@@ -3,6 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createRequire } from 'node:module';
+import { kidneyThrough } from '../core/reference.mjs';
 
 const require = createRequire(import.meta.url);
 const m = require(process.env.DFORMER_PKG ?? '../../core/pkg/dformer.js');
@@ -30,21 +31,6 @@ function volumeArea(r) {
     a += Math.hypot(...cross(sub(x[j], x[i]), sub(x[k], x[i]))) / 2;
   }
   return { v, a };
-}
-
-/** The kidney of issue 14, r = 60(1 + 0.35 cos 2θ − 0.25 cos θ + 0.2 sin 3θ), through `n` anchors
- * with Catmull–Rom tangents (the bench's `polar`). */
-function kidneyThrough(n) {
-  const rk = (t) => 60 * (1 + 0.35 * Math.cos(2 * t) - 0.25 * Math.cos(t) + 0.2 * Math.sin(3 * t));
-  const pts = Array.from({ length: n }, (_, k) => { const t = (2 * Math.PI * k) / n; return [rk(t) * Math.cos(t), rk(t) * Math.sin(t)]; });
-  return {
-    closed: true,
-    points: pts.map(([x, y], i) => {
-      const p = pts[(i + n - 1) % n], q = pts[(i + 1) % n];
-      const t = [(q[0] - p[0]) / 6, (q[1] - p[1]) / 6];
-      return { anchor: [x, y], left: [x - t[0], y - t[1]], right: [x + t[0], y + t[1]] };
-    }),
-  };
 }
 
 /** From the mesh and `flat` alone: the largest edge strain against each triangle's own flat

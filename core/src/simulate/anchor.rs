@@ -138,8 +138,7 @@ pub fn canonical_start(c: &Contour) -> Start {
     if !(far.is_finite() && far > 0.0) {
         return Start::Knot(0);
     }
-    let scale = 2f64.powi(DISTANCE_BITS);
-    let quantum = |x: f64| (x / far * scale).round() as i64;
+    let quantum = |x: f64| quantum(x, far);
     let tolerance = MIRROR_TOLERANCE * far.sqrt();
     let mut axis: Option<(i64, Start)> = None;
     for k in 0..m {
@@ -157,6 +156,12 @@ pub fn canonical_start(c: &Contour) -> Start {
     }
     let q: Vec<i64> = d.iter().map(|&x| quantum(x)).collect();
     Start::Knot(greatest_rotation(&q))
+}
+
+/// `x` as a multiple of `far`'s 2^-[`DISTANCE_BITS`]: distances compared so are equal whichever
+/// knot an outline starts at, where their last bits are not.
+pub(super) fn quantum(x: f64, far: f64) -> i64 {
+    (x / far * 2f64.powi(DISTANCE_BITS)).round() as i64
 }
 
 /// The first `k` from which `q` read forward round the outline (`q[k], q[k + 1], …`) is the

@@ -18,7 +18,7 @@
 //! ([`second_first`]), and an answer solved the other way round is read back in the order asked
 //! ([`swap_back`]): picked either way, a pair gets one mesh and form to the last bit.
 
-use super::anchor::{centre, greatest_rotation, DISTANCE_BITS};
+use super::anchor::{centre, greatest_rotation, quantum};
 use super::{round, Simulation};
 use crate::contour::Contour;
 use kurbo::Point;
@@ -54,8 +54,8 @@ pub fn second_first(a: &Contour, b: &Contour) -> bool {
     distances(b) < distances(a)
 }
 
-/// `c`'s anchors' distances from their mean, quantized to [`DISTANCE_BITS`] of the farthest
-/// (as [`super::anchor::canonical_start`] compares them), read counter-clockwise from the
+/// `c`'s anchors' distances from their mean, quantized relative to the farthest ([`quantum`], as
+/// [`super::anchor::canonical_start`] compares them), read counter-clockwise from the
 /// rotation that makes the sequence greatest ([`greatest_rotation`]): the same
 /// whichever knot `c` starts at and whichever way it runs. Empty for a degenerate outline.
 fn distances(c: &Contour) -> Vec<i64> {
@@ -70,7 +70,7 @@ fn distances(c: &Contour) -> Vec<i64> {
     if !(far.is_finite() && far > 0.0) {
         return Vec::new();
     }
-    let q: Vec<i64> = d.iter().map(|&x| (x / far * 2f64.powi(DISTANCE_BITS)).round() as i64).collect();
+    let q: Vec<i64> = d.iter().map(|&x| quantum(x, far)).collect();
     let best = greatest_rotation(&q);
     (0..m).map(|i| q[(best + i) % m]).collect()
 }

@@ -54,8 +54,8 @@
 //! are that sample's two seam edges and its single interior edge in each piece (to the level
 //! triangle's apex), then the apex's spokes to the level samples beside it. The refinement frees
 //! 11/16 in one round and not the other two, which are then solved on their own samples (after
-//! 0.5 and 0.7–0.9 s native of refinement). A vertex on each such sample's spoke, a third or half of the way to
-//! the apex, did not free them either.
+//! 0.5 and 0.7–0.9 s native of refinement). A vertex on each such sample's spoke, a third or
+//! half of the way to the apex, did not free them either.
 
 use super::glued::SheetMesh;
 use super::retry::Attempt;
