@@ -254,20 +254,31 @@ for (const [name, a, b, share] of nonConvex) {
 // slider and its sweep meet them. Printed: how many converged, the median and largest time, and
 // the offsets that take over the 1 s a slider step may take or do not converge. (In the panel the
 // slider does not wait for a solve it has moved on from for more than 1 s: uxp-panel/src/app.js.)
+// And when the panel first shows a form there: the solve's interim form (simulateWithProgress's
+// `interim`, the level's converged answer at 128 seam vertices, core/src/simulate/progress.rs)
+// or else its result, with how far the interim's volume is from the result's.
 const mirrored = (path) => ({ closed: true, points: path.points.map((q) => ({ anchor: [-q.anchor[0], q.anchor[1]], left: [-q.right[0], q.right[1]], right: [-q.left[0], q.left[1]] })).reverse() });
 for (const [name, a, b] of [['Pebble + its copy', pebble, pebble], ['kidney + its copy', kidney, kidney], ['kidney + its mirror image', kidney, mirrored(kidney)]]) {
   const P = m.measure(a).perimeter;
   const runs = [];
   for (let k = 0; k < 16; k++) {
+    let look = null;
     const t0 = performance.now();
-    const s = m.simulate([a, b], { offset: (k / 16) * P, resolution: 256 }).stats;
-    runs.push({ k, ms: performance.now() - t0, converged: s.converged, shortfall: s.shortfall });
+    const s = m.simulateWithProgress([a, b], { offset: (k / 16) * P, resolution: 256 }, (p) => {
+      if (p.interim) look = { ms: performance.now() - t0, volume: p.interim.stats.volume };
+    }).stats;
+    const ms = performance.now() - t0;
+    runs.push({ k, ms, converged: s.converged, shortfall: s.shortfall, first: look ? look.ms : ms, dv: look ? Math.abs(look.volume / s.volume - 1) : null });
   }
   const times = runs.map((r) => r.ms).sort((x, y) => x - y);
-  const slow = runs.filter((r) => r.ms > 1000 || !r.converged).map((r) => `${r.k}/16 ${(r.ms / 1000).toFixed(1)} s${r.converged ? '' : ` ${r.shortfall}`}`);
+  const firsts = runs.map((r) => r.first).sort((x, y) => x - y);
+  const looks = runs.filter((r) => r.dv !== null);
+  const dvs = looks.map((r) => r.dv).sort((x, y) => x - y);
+  const slow = runs.filter((r) => r.ms > 1000 || !r.converged).map((r) => `${r.k}/16 ${(r.ms / 1000).toFixed(1)} s${r.dv !== null ? ` (first look ${(r.first / 1000).toFixed(1)} s)` : ''}${r.converged ? '' : ` ${r.shortfall}`}`);
   const conv = runs.filter((r) => r.converged).length;
   console.log(`== ${name}, the whole slider (WASM, non-convex, 256 seam vertices, 16 offsets) ==`);
   console.log(`  converged ${conv} of 16 ${mark(conv === 16)}   time median ${(times[7] / 2 + times[8] / 2).toFixed(0)} ms, largest ${times[15].toFixed(0)} ms (≤ 1000 ms) ${mark(times[15] <= 1000)}${slow.length ? `   over 1 s or not converged: ${slow.join(', ')}` : ''}`);
+  console.log(`  first form shown (interim, else the result): median ${(firsts[7] / 2 + firsts[8] / 2).toFixed(0)} ms, largest ${firsts[15].toFixed(0)} ms (≤ 1000 ms) ${mark(firsts[15] <= 1000)}   interims ${looks.length} of 16${looks.length ? `, volume off the result's by median ${(100 * dvs[Math.floor(dvs.length / 2)]).toFixed(2)} %, largest ${(100 * dvs[dvs.length - 1]).toFixed(2)} %` : ''}`);
 }
 
 // Flat gluings: congruent pieces glued congruently make the flat doubly covered form. At offset 0

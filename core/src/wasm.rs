@@ -174,8 +174,9 @@ extern "C" {
 }
 
 /// `simulateWithProgress(pieces, options, onProgress)`: `simulate`, calling `onProgress({ done,
-/// total, maxStrain })` each time a stage of a non-convex pair's solve ends (see
-/// `crate::simulate::progress`); the same result. What the callback throws is ignored.
+/// total, maxStrain })` each time a stage of a non-convex pair's solve ends, and once with
+/// `interim` (a converged form at coarser seam samples, shaped as the result) when there is one
+/// (see `crate::simulate::progress`); the same result. What the callback throws is ignored.
 #[wasm_bindgen(js_name = simulateWithProgress)]
 pub fn simulate_with_progress(pieces: JsValue, options: JsValue, on_progress: JsValue) -> Result<JsValue, JsError> {
     let pieces: Vec<api::path::PathDto> = from_js(pieces, "pieces")?;

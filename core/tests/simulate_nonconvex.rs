@@ -373,7 +373,7 @@ fn test_issue_14_progress_rises_and_ends_at_the_answer() {
     for w in seen.windows(2) {
         assert!(w[1].done > w[0].done && w[1].total == w[0].total, "wanted rising stages of one total, got {:?} then {:?}", w[0], w[1]);
     }
-    let last = seen[seen.len() - 1];
+    let last = &seen[seen.len() - 1];
     assert!(last.done <= last.total);
     let strain = max_edge_strain(&s);
     assert!((last.max_strain - strain).abs() <= 1e-9, "wanted the last report at the answer's strain {strain:.6e}, got {:.6e}", last.max_strain);

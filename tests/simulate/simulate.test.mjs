@@ -178,6 +178,61 @@ test('simulateWithProgress reports rising stages of a non-convex solve and retur
   assert.throws(() => m.simulateWithProgress([dent, ring], {}, 'not a function'), /onProgress: expected a function/);
 });
 
+// A slider position of a non-convex pair can take seconds at 256 seam vertices; its level (every
+// second seam sample) converges well before. simulateWithProgress hands that form over once as
+// `interim`, to be shown while the result is refined. Checked from both meshes here, for the
+// kidney with a circle at a fifth of the perimeter (the circle is solved turned and placed back)
+// picked in both orders (the order solved is the larger piece first, and mapped back): the
+// interim is a closed mesh on every second seam sample, isometric to 1e-3 against its own
+// `flat`, not folded, its flat seam points the result's own (same place, same units), and its
+// volume and extent those of the result to 1 %. A convex pair and a request below 256 have none.
+test('test_issue_14 simulateWithProgress hands over the level\'s form as interim before the result', () => {
+  const dent = kidneyThrough(48);
+  const Pd = m.measure(dent).perimeter;
+  const ring = ellipse(1, 1, Pd / m.measure(ellipse(1, 1)).perimeter);
+  const seamFlat = (r, piece) => {
+    const at = new Map();
+    r.triangles.forEach((t, f) => { if (r.piece[f] === piece) t.forEach((v, q) => at.set(v, r.flat[f][q])); });
+    return r.seam.map((v) => at.get(v));
+  };
+  const extent = (r) => [0, 1, 2].map((k) => Math.max(...r.vertices.map((v) => v[k])) - Math.min(...r.vertices.map((v) => v[k])));
+  for (const pieces of [[dent, ring], [ring, dent]]) {
+    const seen = [];
+    const r = m.simulateWithProgress(pieces, { offset: Pd / 5, resolution: 256 }, (p) => seen.push(p));
+    const plain = m.simulate(pieces, { offset: Pd / 5, resolution: 256 });
+    assert.deepEqual(r.vertices, plain.vertices, 'the same result as simulate');
+    const looks = seen.filter((p) => p.interim);
+    assert.equal(looks.length, 1, `wanted one interim, got ${looks.length}`);
+    const at = seen.findIndex((p) => p.interim);
+    assert.ok(at > 0 && seen[at].done === seen[at - 1].done, `the interim's report repeats done: ${JSON.stringify(seen.map((p) => p.done))}`);
+    const f = looks[0].interim;
+    assert.equal(f.seam.length, 128, 'on every second seam sample');
+    assert.equal(r.seam.length, 256);
+    assert.ok(f.stats.converged, `the interim is converged: ${JSON.stringify(f.stats)}`);
+    const edges = new Set();
+    for (const t of f.triangles) for (let q = 0; q < 3; q++) edges.add(`${t[q]},${t[(q + 1) % 3]}`);
+    for (const key of edges) assert.ok(edges.has(key.split(',').reverse().join(',')), `interim edge ${key} has no opposite: not closed`);
+    const { strain, bend } = strainAndBends(f);
+    assert.ok(strain <= 1e-3 + 1e-9, `interim edges within 1e-3 of their flat lengths: got ${strain.toExponential(3)}`);
+    assert.ok(bend <= Math.PI / 2, `interim not folded: sharpest bend ${(bend * 180 / Math.PI).toFixed(1)}°`);
+    for (const piece of [0, 1]) {
+      const fine = seamFlat(r, piece);
+      for (const q of seamFlat(f, piece)) {
+        const d = Math.min(...fine.map((w) => Math.hypot(w[0] - q[0], w[1] - q[1])));
+        assert.ok(d <= 1e-9 * Pd, `piece ${piece}: the interim's seam point (${q}) is ${d} from the result's nearest`);
+      }
+    }
+    const [vf, vr] = [volumeArea(f).v, volumeArea(r).v];
+    assert.ok(Math.abs(vf / vr - 1) < 1e-2, `interim volume ${vf} against the result's ${vr}`);
+    const [ef, er] = [extent(f), extent(r)];
+    for (let k = 0; k < 3; k++) assert.ok(Math.abs(ef[k] - er[k]) <= 1e-2 * Math.max(...er), `extent ${k}: interim ${ef[k]}, result ${er[k]}`);
+  }
+  const none = [];
+  m.simulateWithProgress([dent, ring], { resolution: 128 }, (p) => none.push(p));
+  m.simulateWithProgress([e, circle], { offset: P / 4 }, (p) => none.push(p));
+  assert.ok(none.every((p) => !('interim' in p)), 'no interim at 128 seam vertices or for a convex pair');
+});
+
 // stats.shortfall says why an answer is not converged, and stats.maxBend its sharpest bend
 // inside a piece; both checked against the mesh here. An L glued to a circle keeps every edge
 // within 1e-3 of its flat length without crossing, but creases the circle by more than 90°:

@@ -35,6 +35,8 @@
   var solveAgain = false;
   var solveStarted = 0; // Date.now() when the solve under way was started
   var supersede = null; // the timer that stops a solve the slider has moved on from
+  var interim = null; // a first look on show (a coarser converged form of a long solve) until a result replaces it
+  var lookedAt = false; // the solve under way has shown its first look
   var exportWanted = ''; // 'obj' / 'stl' clicked while a solve was running: written when it is done
   var exportWhenSolved = null;
   var sweeper = null; // the seam-offset sweep behind the 3D tab's plot (sweep.js)
@@ -469,17 +471,19 @@
     var el = $('#cast3d');
     figures = null;
     el.textContent = '';
-    if (!mesh) return;
+    var form = interim || mesh;
+    if (!form) return;
     try {
-      figures = DF.core.formFigures(mesh, { mmPerUnit: 25.4 / 72, density: settings.density });
+      figures = DF.core.formFigures(form, { mmPerUnit: 25.4 / 72, density: settings.density });
       el.textContent = DF.form3d.castText(figures, fmt);
     } catch (e) {
       el.textContent = e.message;
     }
   }
-  /** Holes, numbers and start marks of the design `d` on the form solved for it. */
+  /** Holes, numbers and start marks of the design `d` on the form solved for it (or its first look). */
   function showMarks(d) {
-    if (viewer && mesh && d && d.pieces) viewer.setMarks(DF.form3d.marksOnForm(d.pieces, mesh));
+    var form = interim || mesh;
+    if (viewer && form && d && d.pieces) viewer.setMarks(DF.form3d.marksOnForm(d.pieces, form));
   }
   function piecesKey(d) {
     return d && d.ok ? JSON.stringify(d.pieces.map(function (p) { return p.path; })) : '';
@@ -596,9 +600,14 @@
    */
   var SUPERSEDE_MS = 1000;
 
-  /** Stops the solve under way SUPERSEDE_MS after it started if a newer one is still wanted then. */
+  /** Stops the solve under way SUPERSEDE_MS after it started if a newer one is still wanted then;
+   *  at once when its first look is on show (the drag has seen this position's form). */
   function supersedeLater() {
     clearTimeout(supersede);
+    if (lookedAt) {
+      DF.solver.cancel();
+      return;
+    }
     supersede = setTimeout(function () {
       if (solving && solveAgain) DF.solver.cancel();
     }, Math.max(0, solveStarted + SUPERSEDE_MS - Date.now()));
@@ -609,7 +618,9 @@
    * while a solve runs are coalesced: when it finishes, the latest design is solved, warm-started
    * from the last solution of the same pieces when the offset moved only a little. A solve that
    * is no longer wanted is stopped after SUPERSEDE_MS; the form on show stays until the new one
-   * replaces it.
+   * replaces it. A long non-convex solve shows its first look (the core's `interim`: the form at
+   * half the seam points, converged, usually within 0.2 % of the final volume) as soon as it is
+   * there, often seconds before the result, and a drag moves on from it at once.
    */
   function solve3d() {
     if (!viewer) viewer = DF.view3d.create($('#view3d'));
@@ -629,6 +640,8 @@
       }
       viewer.setMesh(null);
       mesh = null;
+      interim = null;
+      document.body.dataset.interim = '';
       showFigures();
       if (sweeper) {
         sweepKey = '';
@@ -657,10 +670,14 @@
     document.body.dataset.solving = 'yes';
     var stats3d = $('#stats3d');
     stats3d.dataset.progress = '';
+    lookedAt = false;
     DF.solver.solve(pieces, options, function (p) {
       // A non-convex pair takes seconds: the share of its stages done, after "solving…".
       stats3d.dataset.progress = Math.round((100 * p.done) / p.total) + ' %';
+      if (p.interim) showInterim(p.interim, d);
     }).then(function (result) {
+      interim = null;
+      document.body.dataset.interim = '';
       mesh = result;
       meshKey = key;
       meshOffset = d.offset;
@@ -673,6 +690,8 @@
       showExact();
     }, function (e) {
       if (e.superseded) return; // the design moved on: its solve follows, the form on show stays
+      interim = null;
+      document.body.dataset.interim = '';
       mesh = null;
       viewer.setMesh(null);
       showFigures();
@@ -692,6 +711,21 @@
         else setStatus('', true);
       }
     });
+  }
+  /** The first look `form` at the design `d` while its result is solved: drawn with its marks and
+   *  figures, worded as such; a newer position already wanted is solved at once. */
+  function showInterim(form, d) {
+    interim = form;
+    lookedAt = true;
+    document.body.dataset.interim = 'yes';
+    viewer.setMesh(form);
+    showMarks(d);
+    showFigures();
+    setApproximate(null);
+    var el = $('#stats3d');
+    el.textContent = 'First look: ' + volumeText(form.stats.volume) + ' · ' + areaText(form.stats.area);
+    el.className = 'stats';
+    if (solveAgain) supersedeLater();
   }
   function showView(which) {
     view = which;
@@ -836,7 +870,7 @@
   }
 
   DF.app = {
-    start: start, params: function () { return params; }, design: function () { return design; }, mesh: function () { return mesh; },
+    start: start, params: function () { return params; }, design: function () { return design; }, mesh: function () { return mesh; }, interim: function () { return interim; },
     sweep: function () { return sweeper ? sweeper.state() : null; }, figures: function () { return figures; },
     marks: function () { return viewer ? viewer.marks() : null; },
   };

@@ -143,17 +143,22 @@ pub fn simulate(pieces: &[PathDto], options: &SimulateOptionsDto) -> Result<Simu
 }
 
 /// One progress report of `simulateWithProgress` (see [`crate::simulate::progress`]).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct ProgressDto {
     pub done: usize,
     pub total: usize,
     pub max_strain: f64,
+    /// Once per solve at most, in a report of its own (`done` repeats the last report's): a
+    /// converged form at coarser seam samples than asked, shaped as `simulate`'s result, to show
+    /// while the asked one is solved. Absent from every other report.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub interim: Option<Box<SimulateDto>>,
 }
 
 impl From<Progress> for ProgressDto {
     fn from(p: Progress) -> Self {
-        ProgressDto { done: p.done, total: p.total, max_strain: p.max_strain }
+        ProgressDto { done: p.done, total: p.total, max_strain: p.max_strain, interim: p.interim.map(|s| Box::new(SimulateDto::from(&*s))) }
     }
 }
 

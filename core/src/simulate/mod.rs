@@ -165,12 +165,18 @@ pub struct Simulation {
 
 /// Glues `a` and `b` (closed, equal perimeters) and finds the 3D D-form.
 pub fn simulate(a: &Contour, b: &Contour, options: &SimulateOptions) -> Result<Simulation> {
-    simulate_observed(a, b, options, &mut |_| {})
+    run(a, b, options, &mut |_| {}, false)
 }
 
-/// [`simulate`], telling `observe` each time a stage of a non-convex pair's solve ends
-/// ([`progress`]): the same result, for a host that shows progress.
+/// [`simulate`], telling `observe` each time a stage of a non-convex pair's solve ends, and once
+/// of the interim form when there is one ([`progress`]): the same result, for a host that shows
+/// progress.
 pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn FnMut(progress::Progress)) -> Result<Simulation> {
+    run(a, b, options, observe, true)
+}
+
+/// [`simulate_observed`], building the interim form only when `interims` is set.
+fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn FnMut(progress::Progress), interims: bool) -> Result<Simulation> {
     let timer = clock::Timer::start();
     // Each piece in its own frame, so that where the pair sits on the artboard and the units it
     // is drawn in cannot change its form ([`frame`]); the answer goes back to the input's units
@@ -202,7 +208,7 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
     let per_start = options.max_iterations.min(options::START_MAX_ITERATIONS);
     let with_cap = |f: Framed, cap: usize| (f.0, f.1, f.2, f.3, SimulateOptions { max_iterations: cap, ..f.4 }, f.5);
     if convex {
-        let mut sim = in_frames(with_cap(plain, per_start), true, None, observe)?;
+        let mut sim = in_frames(with_cap(plain, per_start), true, None, observe, false)?;
         sim.stats.ms = timer.elapsed_ms();
         return Ok(sim);
     }
@@ -219,25 +225,37 @@ pub fn simulate_observed(a: &Contour, b: &Contour, options: &SimulateOptions, ob
         drawn
     };
     let starts = anchor::restarts(drawn.0, drawn.1, drawn.2);
-    let solve_from = |k: usize, cap: usize, observe: &mut dyn FnMut(progress::Progress)| -> Result<Simulation> {
+    let solve_from = |k: usize, cap: usize, observe: &mut dyn FnMut(progress::Progress), interims: bool| -> Result<Simulation> {
         let (ra, rb, offset) = starts[k].as_ref().map_or((drawn.0, drawn.1, drawn.2), |(ra, rb, offset)| (ra, rb, *offset));
         let at = starts[k].as_ref().map(|_| drawn.0.knots()[0].anchor);
-        in_frames(with_cap(framed(ra, rb, offset, true)?, cap), false, at, observe)
+        in_frames(with_cap(framed(ra, rb, offset, true)?, cap), false, at, observe, interims)
+    };
+    // An interim form is in the order the pieces were picked, and timed from the request.
+    let first_anchor = a.knots()[0].anchor;
+    let mut picked_order = |mut p: progress::Progress| {
+        if let Some(sim) = p.interim.take() {
+            let mut sim = if swap { picked::swap_back(*sim, first_anchor) } else { *sim };
+            sim.stats.ms = timer.elapsed_ms();
+            p.interim = Some(Box::new(sim));
+        }
+        observe(p)
     };
     let mut done = 0;
+    let mut told = false;
     let mut sim = solve_from(0, per_start, &mut |p: progress::Progress| {
         done = p.done;
-        observe(p)
-    })?;
+        told |= p.interim.is_some();
+        picked_order(p)
+    }, interims)?;
     let left = options.max_iterations.saturating_sub(sim.stats.iterations);
     if left > 0 && anchor::retry(&sim, sheet::FAR_ABOVE * sheet::STRAIN_TARGET, sheet::retry::TOUCH_BELOW) {
         // The second start's stages fill what the first left of the progress bar.
-        let mut after = |p: progress::Progress| observe(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
-        let other = solve_from(1, left.min(options::START_MAX_ITERATIONS), &mut after)?;
+        let mut after = |p: progress::Progress| picked_order(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
+        let other = solve_from(1, left.min(options::START_MAX_ITERATIONS), &mut after, interims && !told)?;
         sim = anchor::better(sim, other);
     }
     if swap {
-        sim = picked::swap_back(sim, a.knots()[0].anchor);
+        sim = picked::swap_back(sim, first_anchor);
     }
     sim.stats.ms = timer.elapsed_ms();
     Ok(sim)
@@ -249,8 +267,9 @@ type Framed = (Contour, frame::Frame, Contour, frame::Frame, SimulateOptions, se
 /// One pair in its frames solved: the convex path for a `convex` pair, else the sheet path
 /// after it; the answer in the input's units and place, its `seam` started at the seam vertex
 /// nearest `seam_start` (A's drawn first anchor, for a pair solved from another start) when
-/// given.
-fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, observe: &mut dyn FnMut(progress::Progress)) -> Result<Simulation> {
+/// given. An interim form (`interims`, [`progress`]) is told to `observe` in the same units and
+/// place.
+fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, observe: &mut dyn FnMut(progress::Progress), interims: bool) -> Result<Simulation> {
     let (a, fa, b, fb, options, glue) = framed;
     let options = &options;
     // A non-convex piece with a circle: every offset is the offset-0 form with the circle turned
@@ -290,9 +309,40 @@ fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, obs
     let (pieces, solution) = solve::solve(&glue, &first)?;
     let convex = pieces.flat.iter().all(|f| checks::is_convex_polygon(&f.pts));
     let left = options.max_iterations.saturating_sub(solution.iterations);
+    // The answer (and an interim form) judged, and taken back to the input's place and units.
+    let output = |sim: &mut Simulation| {
+        stats::judge(sim, !convex);
+        if let Some((c, _)) = &canonical {
+            c.place(sim);
+        }
+        for t in turn.iter().flat_map(|(turns, _)| turns) {
+            t.turn(sim, a.knots()[0].anchor);
+        }
+        sim.stats.offset_free = matches!(symmetry, Some((_, s)) if s.order == 0);
+        for (corners, &p) in sim.flat.iter_mut().zip(&sim.piece) {
+            let f = if p == 0 { fa } else { fb };
+            *corners = corners.map(|q| f.to_input(q));
+        }
+        if let Some(at) = seam_start {
+            anchor::start_seam_at(sim, at);
+        }
+        let u = fa.unit;
+        for v in &mut sim.vertices {
+            *v = v.map(|c| c * u);
+        }
+        sim.stats.seam_gap *= u;
+        sim.stats.area *= u * u;
+        sim.stats.volume *= u * u * u;
+    };
     let mut sim = stats::finish(&pieces, solution.clone());
     if !convex && !solution.converged && left > 0 {
-        let mut report = progress::Reporter::new(observe, sheet::STAGES);
+        let mut framed_observe = |mut p: progress::Progress| {
+            if let Some(sim) = p.interim.as_deref_mut() {
+                output(sim);
+            }
+            observe(p)
+        };
+        let mut report = progress::Reporter::new(&mut framed_observe, sheet::STAGES, interims);
         report.stage(sim.stats.max_strain);
         // A sheet that converged, or is not crumpled, is the answer: the convex path on a pair
         // with a non-convex piece ends strained by percents ([`sheet::CRUMPLED`]).
@@ -340,27 +390,6 @@ fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, obs
             }
         }
     }
-    stats::judge(&mut sim, !convex);
-    if let Some((c, _)) = &canonical {
-        c.place(&mut sim);
-    }
-    for t in turn.iter().flat_map(|(turns, _)| turns) {
-        t.turn(&mut sim, a.knots()[0].anchor);
-    }
-    sim.stats.offset_free = matches!(symmetry, Some((_, s)) if s.order == 0);
-    for (corners, &p) in sim.flat.iter_mut().zip(&sim.piece) {
-        let f = if p == 0 { fa } else { fb };
-        *corners = corners.map(|q| f.to_input(q));
-    }
-    if let Some(at) = seam_start {
-        anchor::start_seam_at(&mut sim, at);
-    }
-    let u = fa.unit;
-    for v in &mut sim.vertices {
-        *v = v.map(|c| c * u);
-    }
-    sim.stats.seam_gap *= u;
-    sim.stats.area *= u * u;
-    sim.stats.volume *= u * u * u;
+    output(&mut sim);
     Ok(sim)
 }

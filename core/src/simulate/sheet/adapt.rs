@@ -204,7 +204,7 @@ pub fn unlock(pieces: &SeamPieces, saddles: &[usize], path: Path, sheet: (SheetM
     if !best.2.converged && RESTART_KB > from {
         // Only a folded sheet starts below RESTART_KB: its second pass, from a thicker sheet.
         let mut quiet = |_| {};
-        refiner.rounds(RESTART_KB, &mut best, &mut steps, &mut Reporter::new(&mut quiet, ROUNDS));
+        refiner.rounds(RESTART_KB, &mut best, &mut steps, &mut Reporter::new(&mut quiet, ROUNDS, false));
     }
     best.2.steps = steps;
     best
@@ -246,7 +246,7 @@ impl Refiner<'_> {
             let mut shell = self.path.shell(pieces, &finer);
             let faces: Vec<[usize; 3]> = finer.faces.iter().flatten().copied().collect();
             let mut quiet = |_| {};
-            let mut r = thin(&mut shell, start, radius, self.budget - *steps, &thinner, &faces, &mut Reporter::new(&mut quiet, thinner.len()));
+            let mut r = thin(&mut shell, start, radius, self.budget - *steps, &thinner, &faces, &mut Reporter::new(&mut quiet, thinner.len(), false));
             *steps += r.steps;
             r.steps = *steps;
             x = r.x.clone();

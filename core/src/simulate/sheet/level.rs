@@ -59,7 +59,7 @@
 
 use super::glued::SheetMesh;
 use super::retry::Attempt;
-use super::{adapt, homotopy_on, refine, saddle, thin, Path, HOMOTOPY_KB, INTERIOR_EDGE, SCHEDULE, STRAIN_TARGET};
+use super::{adapt, finish, homotopy_on, refine, saddle, thin, Path, HOMOTOPY_KB, INTERIOR_EDGE, SCHEDULE, STRAIN_TARGET};
 use crate::simulate::checks::faces_cross;
 use crate::simulate::metric::is_seam;
 use crate::simulate::progress::Reporter;
@@ -177,7 +177,10 @@ pub fn nested(pieces: &SeamPieces, level: &SheetMesh) -> Option<SheetMesh> {
 /// they found answers the level's did not (the kidney with its copy at 13/16 converges at 256
 /// seam vertices and ends 3.4 % strained at 128), and with the level's taken first that pair
 /// took 2.9 s native at 256 instead of 1.6 (1.7 s now).
-pub fn solve(pieces: &SeamPieces, stride: usize, budget: usize, report: &mut Reporter) -> Option<Attempt> {
+///
+/// A converged level is told to `report` as the interim form ([`Reporter::interim`]), with
+/// `iterations` taken before the sheet path.
+pub fn solve(pieces: &SeamPieces, stride: usize, iterations: usize, budget: usize, report: &mut Reporter) -> Option<Attempt> {
     let level = pieces.every(stride);
     if floor(&level) > STRAIN_TARGET {
         return None;
@@ -186,6 +189,9 @@ pub fn solve(pieces: &SeamPieces, stride: usize, budget: usize, report: &mut Rep
     if !a.sound() {
         return None;
     }
+    if a.relaxed.converged {
+        report.interim(|| finish::simulation(&level, &a.mesh, &a.shell, &a.relaxed.x, iterations + a.relaxed.steps, true));
+    }
     let mesh = nested(pieces, &a.mesh)?;
     let x = refine::carry(&a.mesh, &a.relaxed.x, &mesh)?;
     let mut shell = mesh.shell();
@@ -193,12 +199,12 @@ pub fn solve(pieces: &SeamPieces, stride: usize, budget: usize, report: &mut Rep
     let radius = pieces.flat[0].perimeter / std::f64::consts::TAU;
     let stages: Vec<f64> = SCHEDULE.iter().copied().filter(|&b| b <= a.relaxed.stage).collect();
     let mut quiet = |_| {};
-    let mut relaxed = thin(&mut shell, x, radius, budget.saturating_sub(a.relaxed.steps), &stages, &faces, &mut Reporter::new(&mut quiet, stages.len()));
+    let mut relaxed = thin(&mut shell, x, radius, budget.saturating_sub(a.relaxed.steps), &stages, &faces, &mut Reporter::new(&mut quiet, stages.len(), false));
     relaxed.steps += a.relaxed.steps;
     // A smooth pair bent by just over 90° between two triangles is refined there, as on its own
     // samples ([`adapt`]): the kidney with its mirror image at half its perimeter, folded by
     // 93.5° on the level's samples and on these, converges so at 256.
-    let (mesh, shell, relaxed) = adapt::unlock(pieces, &saddle::samples(pieces), Path::plain(HOMOTOPY_KB), (mesh, shell, relaxed), budget, &mut Reporter::new(&mut quiet, adapt::ROUNDS));
+    let (mesh, shell, relaxed) = adapt::unlock(pieces, &saddle::samples(pieces), Path::plain(HOMOTOPY_KB), (mesh, shell, relaxed), budget, &mut Reporter::new(&mut quiet, adapt::ROUNDS, false));
     let crossing = !relaxed.converged && faces_cross(&relaxed.x, &mesh.faces.iter().flatten().copied().collect::<Vec<_>>());
     let b = Attempt { mesh, shell, relaxed, crossing };
     (b.grade().0 <= a.grade().0).then_some(b)

@@ -508,7 +508,7 @@ pub enum Outcome {
 /// and on its own samples ([`own`]) only when that fails.
 pub fn simulate(pieces: &SeamPieces, iterations: usize, budget: usize, report: &mut Reporter) -> Outcome {
     let solved = match level::stride(pieces.n) {
-        Some(s) if s > 1 => level::solve(pieces, s, budget, report).map_or_else(|| own(pieces, budget, report), Ok),
+        Some(s) if s > 1 => level::solve(pieces, s, iterations, budget, report).map_or_else(|| own(pieces, budget, report), Ok),
         _ => own(pieces, budget, report),
     };
     match solved {

@@ -156,7 +156,7 @@ pub fn others(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], first: A
             break;
         }
         let mut quiet = |_| {};
-        let Some(a) = attempt(pieces, mesh, saddles, path, budget - spent, &mut Reporter::new(&mut quiet, super::STAGES)) else { break };
+        let Some(a) = attempt(pieces, mesh, saddles, path, budget - spent, &mut Reporter::new(&mut quiet, super::STAGES, false)) else { break };
         spent += a.relaxed.steps;
         if a.grade() < best.grade() {
             best = a;
