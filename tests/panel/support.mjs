@@ -122,3 +122,43 @@ export async function readSvgBack(panel, svgText, read) {
     await blank.close();
   }
 }
+
+/**
+ * An init script (`page.addInitScript(holdSolves)`) that wraps the page's Worker so that a test
+ * can hold a solve: after `window.__holdNext = true` the next solve job (not the sweep's
+ * 'figures' jobs) is held, either never posted (`window.__holdMode` 'job', the default: a solve
+ * that never ends) or posted with only its progress reports let through ('result': a solve that
+ * reports, then runs on). `window.__held` counts the jobs held, `window.__terminated` the workers
+ * terminated.
+ */
+export function holdSolves() {
+  const Real = window.Worker;
+  window.__held = 0;
+  window.__terminated = 0;
+  window.__holdNext = false;
+  window.__holdMode = 'job';
+  window.Worker = class {
+    constructor(url) {
+      this.real = new Real(url);
+      this.heldId = null;
+      this.real.onmessage = (e) => {
+        if (e.data.id === this.heldId && !e.data.progress) return;
+        if (this.onmessage) this.onmessage(e);
+      };
+      this.real.onerror = (e) => this.onerror && this.onerror(e);
+    }
+    postMessage(m) {
+      if (window.__holdNext && m.op !== 'figures' && m.pieces) {
+        window.__holdNext = false;
+        window.__held++;
+        if (window.__holdMode === 'job') return;
+        this.heldId = m.id;
+      }
+      this.real.postMessage(m);
+    }
+    terminate() {
+      window.__terminated++;
+      this.real.terminate();
+    }
+  };
+}

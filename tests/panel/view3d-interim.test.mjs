@@ -10,7 +10,7 @@
 // look still stops it and solves the newest position (before, the panel waited on it for ever).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { usePanelBrowser, waitReady } from './support.mjs';
+import { holdSolves, usePanelBrowser, waitReady } from './support.mjs';
 import { meshVolume } from './mesh.mjs';
 
 const panel = usePanelBrowser();
@@ -19,38 +19,12 @@ const volumeOf = (form) => meshVolume(form.triangles.map((t) => t.map((v) => for
 
 test('3D tab: a long solve shows its first look, then the result; a drag moves on from it at once', async () => {
   const page = await panel.browser.newPage({ viewport: { width: 1100, height: 720 } });
+  await page.addInitScript(holdSolves);
   await page.addInitScript(() => {
     // The slider's one-second stop (app.js supersedeLater's timer) never fires here: only the
     // first look may stop a solve the drag has moved on from.
     const later = window.setTimeout;
     window.setTimeout = (fn, ms, ...rest) => (typeof fn === 'function' && /DF\.solver\.cancel/.test(String(fn)) ? 0 : later(fn, ms, ...rest));
-    const Real = window.Worker;
-    window.__terminated = 0;
-    window.__holdNext = false;
-    window.__held = null;
-    window.Worker = class {
-      constructor(url) {
-        this.real = new Real(url);
-        // The held job's progress gets through; its result never does (a solve that runs on).
-        this.real.onmessage = (e) => {
-          if (e.data.id === window.__held && this === window.__heldBy && !e.data.progress) return;
-          if (this.onmessage) this.onmessage(e);
-        };
-        this.real.onerror = (e) => this.onerror && this.onerror(e);
-      }
-      postMessage(m) {
-        if (window.__holdNext && m.op !== 'figures' && m.pieces) {
-          window.__holdNext = false;
-          window.__held = m.id;
-          window.__heldBy = this;
-        }
-        this.real.postMessage(m);
-      }
-      terminate() {
-        window.__terminated++;
-        this.real.terminate();
-      }
-    };
   });
   await page.goto(panel.url);
   await waitReady(page, 'load');
@@ -87,9 +61,9 @@ test('3D tab: a long solve shows its first look, then the result; a drag moves o
     el.value = String(v);
     el.dispatchEvent(new Event('input'));
   }, permille);
-  await page.evaluate(() => { window.__holdNext = true; });
+  await page.evaluate(() => { window.__holdMode = 'result'; window.__holdNext = true; });
   await slide(300);
-  await page.waitForFunction(() => window.looks.length === 2 && document.body.dataset.solving === 'yes', null, { timeout: 60000 });
+  await page.waitForFunction(() => window.__held === 1 && window.looks.length === 2 && document.body.dataset.solving === 'yes', null, { timeout: 60000 });
   await slide(800);
   await page.waitForFunction(() => document.body.dataset.solve === 'ok' && !document.body.dataset.solving && document.body.dataset.interim === '',
     null, { timeout: 60000 });

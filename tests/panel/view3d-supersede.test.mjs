@@ -8,7 +8,7 @@
 // independently: the form shown is a fresh solve of the design at the slider's last position.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { openSvgFiles, usePanelBrowser, waitReady } from './support.mjs';
+import { holdSolves, openSvgFiles, usePanelBrowser, waitReady } from './support.mjs';
 
 const panel = usePanelBrowser();
 
@@ -18,32 +18,7 @@ const SVG = '<svg xmlns="http://www.w3.org/2000/svg" width="300mm" height="150mm
 
 test('3D tab: a solve the slider has moved on from is stopped and the newest position is solved', async () => {
   const page = await panel.browser.newPage({ viewport: { width: 1100, height: 720 } });
-  await page.addInitScript(() => {
-    const Real = window.Worker;
-    window.__held = 0;
-    window.__terminated = 0;
-    window.__holdNext = false;
-    window.Worker = class {
-      constructor(url) {
-        this.real = new Real(url);
-        this.real.onmessage = (e) => this.onmessage && this.onmessage(e);
-        this.real.onerror = (e) => this.onerror && this.onerror(e);
-      }
-      postMessage(m) {
-        // The seam-offset sweep's jobs (op 'figures') go through; the next solve is held.
-        if (window.__holdNext && m.op !== 'figures') {
-          window.__holdNext = false;
-          window.__held++;
-          return;
-        }
-        this.real.postMessage(m);
-      }
-      terminate() {
-        window.__terminated++;
-        this.real.terminate();
-      }
-    };
-  });
+  await page.addInitScript(holdSolves);
   await page.goto(panel.url);
   await waitReady(page, 'load');
   await openSvgFiles(page, [['rect-ellipse.svg', SVG]]);
