@@ -145,7 +145,9 @@ pub(super) fn mesh_polygon(seam: &[[f64; 2]], max_area: f64, fans: &[usize], inn
     let area = polygon_area(seam);
     let budget = ((8.0 * area / max_area) as usize).max(4 * n) + 1000;
     let params = RefinementParameters::<f64>::new()
-        .with_angle_limit(AngleLimit::from_deg(MIN_ANGLE))
+        // The ratio `1 / (2 sin θ)` that `AngleLimit::from_deg` computes, its sine from libm
+        // ([`LibmExt`]) rather than each system's maths library: the same mesh everywhere.
+        .with_angle_limit(AngleLimit::from_radius_to_shortest_edge_ratio(0.5 / MIN_ANGLE.to_radians().sin_m()))
         .with_max_allowed_area(max_area)
         .with_max_additional_vertices(budget)
         .keep_constraint_edges()
