@@ -124,7 +124,7 @@ pub fn judge(sim: &mut Simulation, folds: bool) {
     }
     // The samples' share of the strain is not the solver's: beyond the floor, within target.
     let strained = sim.stats.max_strain > target;
-    let sampled = floor > target && sim.stats.max_strain <= floor + target;
+    let sampled = floor > target && sim.stats.max_strain <= strain_allowed(floor);
     sim.stats.shortfall = if sim.stats.converged {
         None
     } else if strained && !sampled {
@@ -138,6 +138,14 @@ pub fn judge(sim: &mut Simulation, folds: bool) {
     } else {
         Some(Shortfall::Unsettled)
     };
+}
+
+/// The largest edge strain of an answer that is as isometric as seam samples whose floor
+/// ([`strain_floor`]) is `floor` allow: the target ([`crate::simulate::sheet::STRAIN_TARGET`]),
+/// or, where the floor is above it, the floor plus the target ([`Shortfall::Sampling`]).
+pub fn strain_allowed(floor: f64) -> f64 {
+    let target = super::sheet::STRAIN_TARGET;
+    if floor > target { floor + target } else { target }
 }
 
 /// The least largest strain of any mesh with these triangles' flat corners: an edge that two

@@ -100,6 +100,13 @@ impl Attempt {
         self.grade().0 <= 1
     }
 
+    /// Sound, or uncrossed and as isometric as seam samples whose floor is `floor` allow
+    /// ([`crate::simulate::stats::strain_allowed`]): where the samples' chords on the two pieces
+    /// differ by more than the target, no answer on them is isometric, and this is the best.
+    pub fn sound_on(&self, floor: f64) -> bool {
+        self.sound() || (!self.crossing && self.relaxed.max_strain <= crate::simulate::stats::strain_allowed(floor))
+    }
+
     /// The discrete shells' bending energy of the shape, `Σ w θ²` over the hinges (weight
     /// `3|e|²/A`, Grinspun et al. 2003): the shell's energy at unit bending weight less its
     /// membrane part.
