@@ -558,10 +558,10 @@
         '(an L\'s notch, a heart\'s dip) shallower usually avoids it; rounding its corners alone may not.' + tail;
     }
     if (st.shortfall === 'sampling') {
-      return '⚠ Approximate preview: the outline turns too tightly somewhere (a corner rounded by a fraction of a millimetre) ' +
+      return '⚠ Approximate preview: the outline turns too tightly somewhere (a corner rounded by a fraction of a millimetre, or the tips of a star) ' +
         'for the preview\'s seam points, which alone force edges up to ' + (st.strainFloor * 100).toFixed(2) + ' % off their ' +
         'flat lengths, more than the 0.1 % a true D-form allows. The shape is close to the real D-form but not exact; ' +
-        'rounding that corner a little more gives an exact preview.' + tail;
+        'rounding the tightest turns a little more gives an exact preview.' + tail;
     }
     if (st.shortfall === 'unsettled') {
       return '⚠ Approximate preview: the solver stopped before this shape settled (after ' + st.iterations + ' steps). The real ' +
