@@ -159,6 +159,19 @@ pub fn rounded_star() -> Contour {
     polar(100, |t| 50.0 * (1.0 + 0.28 * (5.0 * t).cos().powi(3)))
 }
 
+/// A star polygon of `points` tips on a radius of 50 mm, its valleys at `inner` times that,
+/// every corner rounded by `r` ([`rounded_polygon`]).
+pub fn star_polygon(points: usize, inner: f64, r: f64) -> Contour {
+    let pts: Vec<(f64, f64)> = (0..2 * points)
+        .map(|i| {
+            let radius = if i % 2 == 0 { 50.0 } else { 50.0 * inner };
+            let t = std::f64::consts::PI * i as f64 / points as f64;
+            (radius * t.sin(), radius * t.cos())
+        })
+        .collect();
+    rounded_polygon(&pts, r)
+}
+
 /// An L-shaped hexagon (one reflex corner): [`notched_l`] with a 40 mm notch, sharp.
 pub fn l_shape() -> Contour {
     notched_l(40.0, 0.0)
