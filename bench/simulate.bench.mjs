@@ -107,6 +107,10 @@ const heart = smooth(Array.from({ length: 64 }, (_, k) => {
   return [3 * 16 * Math.sin(t) ** 3, 3 * (13 * Math.cos(t) - 5 * Math.cos(2 * t) - 2 * Math.cos(3 * t) - Math.cos(4 * t))];
 }).reverse());
 const star = polar(100, (t) => 50 * (1 + 0.28 * Math.cos(5 * t) ** 3));
+// Stars whose tips and valleys are too tight for 128 seam samples to be isometric but not for
+// 256 (core/src/simulate/sheet/level.rs, stop 54): 256 is 128's form refined at the seam.
+const star4 = polar(100, (t) => 50 * (1 + 0.22 * Math.cos(4 * t) ** 3));
+const star6 = polar(100, (t) => 50 * (1 + 0.15 * Math.cos(6 * t) ** 3));
 // A heart as drawn in Illustrator: corner anchors at the dip and the tip (shapes.rs' drawn_heart).
 const knot = (anchor, left, right) => ({ anchor, left, right });
 const drawnHeart = { closed: true, points: [
@@ -207,10 +211,11 @@ function mirrorGap(r) {
 // solve a slider step can meet.
 const nonConvex = [['Pebble + circle (the browser app sample)', pebble], ['kidney + circle', kidney],
   ['kidney + 2:1 ellipse at 1/8 (the issue\'s table)', kidney, scaled(ellipse(2, 1), m.measure(kidney).perimeter / m.measure(ellipse(2, 1)).perimeter), 1 / 8], ['five-lobed + circle', lobes], ['heart + circle', heart], ['heart drawn with corners + circle', drawnHeart], ['rounded star + circle', star],
+  ['four-tipped star + circle', star4], ['six-tipped star + circle', star6],
   ['heart drawn with corners + its copy at 3/16 (followed again)', drawnHeart, drawnHeart, 3 / 16],
   ['kidney + its copy at 13/16 (followed again, touching)', kidney, kidney, 13 / 16]];
 // The pieces above that are symmetric about a line (with a circle, so is their gluing).
-const mirrorSymmetric = new Set([lobes, heart, drawnHeart, star]);
+const mirrorSymmetric = new Set([lobes, heart, drawnHeart, star, star4, star6]);
 for (const [name, a, b, share] of nonConvex) {
   const pieces = [a, b ?? circleFor(a)];
   const offset = (share ?? 0) * m.measure(a).perimeter;
