@@ -154,9 +154,14 @@ pub fn rounded_triangle(r: f64) -> Contour {
     rounded_polygon(&[(0.0, 0.0), (80.0, 0.0), (30.0, 60.0)], r)
 }
 
-/// A five-pointed star with rounded tips: r = 50(1 + 0.3 cos 5θ)^... sampled smoothly.
+/// A five-pointed star with rounded tips: [`polar_star`] with 5 tips, `a` = 0.28.
 pub fn rounded_star() -> Contour {
-    polar(100, |t| 50.0 * (1.0 + 0.28 * (5.0 * t).cos().powi(3)))
+    polar_star(5.0, 0.28)
+}
+
+/// A star of `tips` rounded tips, r = 50(1 + a·cos³(tips·θ)) mm, through 100 points.
+pub fn polar_star(tips: f64, a: f64) -> Contour {
+    polar(100, move |t| 50.0 * (1.0 + a * (tips * t).cos().powi(3)))
 }
 
 /// A star polygon of `points` tips on a radius of 50 mm, its valleys at `inner` times that,
