@@ -640,8 +640,7 @@
       }
       viewer.setMesh(null);
       mesh = null;
-      interim = null;
-      document.body.dataset.interim = '';
+      dropInterim();
       showFigures();
       if (sweeper) {
         sweepKey = '';
@@ -676,8 +675,7 @@
       stats3d.dataset.progress = Math.round((100 * p.done) / p.total) + ' %';
       if (p.interim) showInterim(p.interim, d);
     }).then(function (result) {
-      interim = null;
-      document.body.dataset.interim = '';
+      dropInterim();
       mesh = result;
       meshKey = key;
       meshOffset = d.offset;
@@ -690,8 +688,7 @@
       showExact();
     }, function (e) {
       if (e.superseded) return; // the design moved on: its solve follows, the form on show stays
-      interim = null;
-      document.body.dataset.interim = '';
+      dropInterim();
       mesh = null;
       viewer.setMesh(null);
       showFigures();
@@ -711,6 +708,11 @@
         else setStatus('', true);
       }
     });
+  }
+  /** No first look on show any more (a result, an error or no design to solve replaces it). */
+  function dropInterim() {
+    interim = null;
+    document.body.dataset.interim = '';
   }
   /** The first look `form` at the design `d` while its result is solved: drawn with its marks and
    *  figures, worded as such; a newer position already wanted is solved at once. */
