@@ -214,20 +214,21 @@ pub fn nested(pieces: &SeamPieces, level: &SheetMesh) -> Option<SheetMesh> {
 /// samples cannot converge ([`floor`]), it must converge where the requested samples can, and
 /// be as sound as they allow where they cannot. A far-off level is not
 /// followed again on other paths ([`super::retry`]): those run on the requested samples, where
-/// they found answers the level's did not (the kidney with its copy at 13/16 converges at 256
-/// seam vertices and ends 3.4 % strained at 128), and with the level's taken first that pair
-/// took 2.9 s native at 256 instead of 1.6 (1.7 s now).
+/// they found answers the level's did not (the kidney with its copy at 13/16 converged at 256
+/// seam vertices and ended 3.4 % strained at 128, stop 48), and with the level's taken first
+/// that pair took 2.9 s native at 256 instead of 1.6. The level's homotopy is computed once for
+/// both ([`super::FirstStart`]).
 ///
 /// A converged level is told to `report` as the interim form ([`Reporter::interim`]), with
 /// `iterations` taken before the sheet path.
-pub fn solve(pieces: &SeamPieces, stride: usize, iterations: usize, budget: usize, report: &mut Reporter) -> Option<Attempt> {
+pub fn solve(pieces: &SeamPieces, stride: usize, iterations: usize, budget: usize, start: &mut super::FirstStart, report: &mut Reporter) -> Option<Attempt> {
     let level = pieces.every(stride);
     let (coarse, fine) = (floor(&level), floor(pieces));
     let sampled = coarse > STRAIN_TARGET;
     if sampled && fine <= STRAIN_TARGET && fine * SPACED * (stride * stride) as f64 > coarse {
         return None;
     }
-    let (_, _, a) = super::first(&level, budget, report).ok()?;
+    let (_, _, a) = super::first(&level, start, budget, report).ok()?;
     if !a.sound_on(coarse) {
         return None;
     }

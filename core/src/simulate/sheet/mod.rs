@@ -232,6 +232,37 @@ impl Path {
     }
 }
 
+/// The first path's homotopy on the level ([`level::homotopy`] along
+/// [`Path::plain`]`(`[`HOMOTOPY_KB`]`)`), computed once per request. The level's own solve
+/// ([`level::solve`]) starts from it, and so does the requested samples' own path ([`own`]) when
+/// the level's answer is not kept: the level's samples are the requested ones every
+/// [`level::stride`]-th (a level's own level is itself), and the homotopy runs on them alone, so
+/// both computed the same thing. Until stop 55 each did: the kidney with its copy at 13/16
+/// reported the same four strains twice (2.58e-2 … 1.58e-1), 40–50 ms native per such solve.
+#[derive(Default)]
+pub struct FirstStart {
+    /// The level's number of samples and its homotopy's end, once computed (`None` inside when
+    /// no twin pair of the level could be solved).
+    known: Option<(usize, Option<level::Start>)>,
+}
+
+impl FirstStart {
+    /// The level's homotopy along the first path for `pieces` (a request or its level), from
+    /// memory when it was computed for the same level (its stages then skipped in `report`).
+    pub fn get(&mut self, pieces: &SeamPieces, report: &mut Reporter) -> Option<&level::Start> {
+        let level = level::stride(pieces.n).map(|s| pieces.n / s);
+        match &self.known {
+            Some((n, start)) if Some(*n) == level => {
+                if start.is_some() {
+                    report.skip(HOMOTOPY_STEPS);
+                }
+            }
+            _ => self.known = level.map(|n| (n, level::homotopy(pieces, Path::plain(HOMOTOPY_KB), report))),
+        }
+        self.known.as_ref()?.1.as_ref()
+    }
+}
+
 /// Shares of a circle's turning in the convex twins, tried in order ([`morph::Morph`]).
 pub const TWIN_CIRCLE_SHARES: [f64; 3] = [0.25, 0.5, 0.75];
 
@@ -468,10 +499,19 @@ fn homotopy_on(pieces: &SeamPieces, mesh: &SheetMesh, rescue: bool, path: Path, 
 /// `layered` with rows beside saddles, [`saddle`]); then the thinning on `mesh` through the
 /// stages of [`SCHEDULE`] thinner than the homotopy's bending
 /// weight (`path.kb`, as `kb / R²`: [`HOMOTOPY_KB`] first, [`retry::KB`] when that ends far
-/// off), with the path's self-contact ([`Touch`], [`retry::CONTACT_KB`]). `None` when no twin
-/// pair can be built and solved.
-pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, layered: bool, path: Path, budget: usize, report: &mut Reporter) -> Option<(Shell, Relaxed)> {
-    let (mut shell, x, steps) = match level::homotopy(pieces, path, report) {
+/// off), with the path's self-contact ([`Touch`], [`retry::CONTACT_KB`]). On the first path
+/// (plain, at [`HOMOTOPY_KB`]) the level's homotopy is taken from `first` when given
+/// ([`FirstStart`]). `None` when no twin pair can be built and solved.
+pub fn follow(pieces: &SeamPieces, mesh: &SheetMesh, layered: bool, path: Path, first: Option<&mut FirstStart>, budget: usize, report: &mut Reporter) -> Option<(Shell, Relaxed)> {
+    let computed;
+    let start = match first {
+        Some(known) if path.kb == HOMOTOPY_KB && path.touch == Touch::Free => known.get(pieces, report),
+        _ => {
+            computed = level::homotopy(pieces, path, report);
+            computed.as_ref()
+        }
+    };
+    let (mut shell, x, steps) = match start {
         Some(start) => (path.shell(pieces, mesh), refine::carry(&start.mesh, &start.x, mesh)?, start.steps),
         None if layered => {
             // The homotopy on the plain mesh ([`saddle`]), carried onto the layered one.
@@ -508,8 +548,11 @@ pub enum Outcome {
 /// and on its own samples ([`own`]) only when that fails.
 pub fn simulate(pieces: &SeamPieces, iterations: usize, budget: usize, report: &mut Reporter) -> Outcome {
     let solved = match level::stride(pieces.n) {
-        Some(s) if s > 1 => level::solve(pieces, s, iterations, budget, report).map_or_else(|| own(pieces, budget, report), Ok),
-        _ => own(pieces, budget, report),
+        Some(s) if s > 1 => {
+            let mut start = FirstStart::default();
+            level::solve(pieces, s, iterations, budget, &mut start, report).map_or_else(|| own(pieces, &mut start, budget, report), Ok)
+        }
+        _ => own(pieces, &mut FirstStart::default(), budget, report),
     };
     match solved {
         Ok(a) => Outcome::Sheet(finish::simulation(pieces, &a.mesh, &a.shell, &a.relaxed.x, iterations + a.relaxed.steps, a.relaxed.converged), a.relaxed.max_strain),
@@ -519,18 +562,19 @@ pub fn simulate(pieces: &SeamPieces, iterations: usize, budget: usize, report: &
 
 /// The sheet path on `pieces`' own samples: from its convex twins, refined where its mesh holds
 /// it ([`adapt`]), and followed again at other bending weights when it ends far off
-/// ([`retry`]). `Err` when a piece cannot be meshed or no twin pair can be solved.
-pub fn own(pieces: &SeamPieces, budget: usize, report: &mut Reporter) -> Result<retry::Attempt, Outcome> {
-    let (mesh, saddles, first) = first(pieces, budget, report)?;
+/// ([`retry`]); its first path's homotopy is `start`'s, when the level's solve computed it.
+/// `Err` when a piece cannot be meshed or no twin pair can be solved.
+pub fn own(pieces: &SeamPieces, start: &mut FirstStart, budget: usize, report: &mut Reporter) -> Result<retry::Attempt, Outcome> {
+    let (mesh, saddles, first) = first(pieces, start, budget, report)?;
     Ok(retry::others(pieces, &mesh, &saddles, first, budget, report))
 }
 
 /// The first path of [`own`] (before any of [`retry`]): the mesh with its saddle rows, the
-/// saddle samples and the attempt.
-pub fn first(pieces: &SeamPieces, budget: usize, report: &mut Reporter) -> Result<(SheetMesh, Vec<usize>, retry::Attempt), Outcome> {
+/// saddle samples and the attempt, its level's homotopy from `start` ([`FirstStart`]).
+pub fn first(pieces: &SeamPieces, start: &mut FirstStart, budget: usize, report: &mut Reporter) -> Result<(SheetMesh, Vec<usize>, retry::Attempt), Outcome> {
     let saddles = saddle::samples(pieces);
     let mesh = SheetMesh::layered(pieces, INTERIOR_EDGE, &saddles).ok_or(Outcome::Unmeshed)?;
-    let first = retry::attempt(pieces, &mesh, &saddles, Path::plain(HOMOTOPY_KB), budget, report).ok_or(Outcome::NeedsStart)?;
+    let first = retry::attempt(pieces, &mesh, &saddles, Path::plain(HOMOTOPY_KB), Some(start), budget, report).ok_or(Outcome::NeedsStart)?;
     Ok((mesh, saddles, first))
 }
 

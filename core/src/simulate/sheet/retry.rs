@@ -36,7 +36,7 @@
 
 use super::glued::SheetMesh;
 use super::shell::Shell;
-use super::{adapt, follow, Path, Relaxed, Touch, FAR_ABOVE, STRAIN_TARGET};
+use super::{adapt, follow, FirstStart, Path, Relaxed, Touch, FAR_ABOVE, STRAIN_TARGET};
 use crate::simulate::checks::{faces_cross, thickness};
 use crate::simulate::progress::Reporter;
 use crate::simulate::seam::SeamPieces;
@@ -135,9 +135,10 @@ pub fn far_off(a: &Attempt) -> bool {
 pub const FLAT: f64 = 1e-4;
 
 /// The homotopy along `path` and the thinning ([`follow`]), refined where the mesh holds the
-/// sheet ([`adapt::unlock`]). `None` when no twin pair can be built and solved.
-pub fn attempt(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], path: Path, budget: usize, report: &mut Reporter) -> Option<Attempt> {
-    let (shell, r) = follow(pieces, mesh, !saddles.is_empty(), path, budget, report)?;
+/// sheet ([`adapt::unlock`]); the first path's homotopy from `first` when given ([`follow`]).
+/// `None` when no twin pair can be built and solved.
+pub fn attempt(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], path: Path, first: Option<&mut FirstStart>, budget: usize, report: &mut Reporter) -> Option<Attempt> {
+    let (shell, r) = follow(pieces, mesh, !saddles.is_empty(), path, first, budget, report)?;
     let (mesh, shell, relaxed) = adapt::unlock(pieces, saddles, path, (mesh.clone(), shell, r), budget, report);
     // A converged answer is sound ([`super::finish::sound`]), so it does not cross: only the
     // others are tested, not every pair's answer.
@@ -163,7 +164,7 @@ pub fn others(pieces: &SeamPieces, mesh: &SheetMesh, saddles: &[usize], first: A
             break;
         }
         let mut quiet = |_| {};
-        let Some(a) = attempt(pieces, mesh, saddles, path, budget - spent, &mut Reporter::new(&mut quiet, super::STAGES, false)) else { break };
+        let Some(a) = attempt(pieces, mesh, saddles, path, None, budget - spent, &mut Reporter::new(&mut quiet, super::STAGES, false)) else { break };
         spent += a.relaxed.steps;
         if a.grade() < best.grade() {
             best = a;
