@@ -4,7 +4,9 @@
 // energies and why). Prints Evolver's volume, its max edge strain, whether its mesh
 // self-intersects, the volume of `simulate` (called through the contract, WASM) and the ratio;
 // for the L with a circle (`crease` in pairs.mjs) also each piece's sharpest bend, both
-// solvers', which says whether the crease `simulate` reports is the sheet's own.
+// solvers', which says whether the crease `simulate` reports is the sheet's own; for the kidney
+// with its copy (`touch`) whether each sheet passes through itself, which says whether that
+// form needs the sheets to touch.
 //
 // Run: node bench/evolver.bench.mjs   (scripts/bench.sh installs Evolver and builds the WASM)
 // Env: DFORMER_PKG (package path), DFORMER_EVOLVER_SEAM (seam vertices, default 128),
@@ -107,6 +109,19 @@ pairs().forEach((pair, index) => {
         ? 'both fold the circle by more than 90°, beside the notch: the crease is the sheet\'s, not our solver\'s'
         : 'Evolver and ours disagree on whether the circle folds by more than 90°';
     console.log(`  crease: ${verdict}`);
+  }
+  if (pair.touch) {
+    // Whether each solver's sheet passes through itself, both read from the meshes.
+    const oursCrossing = selfIntersections(ours.vertices, ours.triangles, (2 * sheet.perimeter) / 256);
+    console.log(`  self-intersecting facet pairs: Evolver ${crossings} (free sheet), ours ${oursCrossing} (shortfall ${s.shortfall})`);
+    const verdict = crossings > 0
+      ? oursCrossing === 0
+        ? 'Evolver\'s free sheet passes through itself where ours is held apart: this form is one the sheets hold by touching'
+        : 'both pass through themselves'
+      : ok
+        ? 'Evolver finds an embedded free equilibrium that ours does not: a miss of our paths'
+        : 'Evolver ends embedded but not inextensible, so this run says nothing about touching';
+    console.log(`  touch: ${verdict}`);
   }
   const ratio = s.volume / vol;
   console.log(`  ratio ours / Evolver: ${ratio.toFixed(4)} (${((ratio - 1) * 100).toFixed(2)} %)${ok ? '' : ' — Evolver not converged'}`);

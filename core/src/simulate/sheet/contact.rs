@@ -17,7 +17,20 @@
 //! Followed again with contact (as a thick sheet, `kb/R²` = 1e-3), it ends isometric and
 //! uncrossed, creased, at 3/16 and 13/16 (its copy) and at 3/16 (its mirror image), where it
 //! had ended 4.2–4.8 % stretched through itself; with contact across the seam too (below), it
-//! converges at 1/16 (its copy), and so does the kidney with its copy at 13/16.
+//! converges at 1/16 (its copy), and so did the kidney with its copy at 13/16 until stop 49's
+//! canonical start ([`crate::simulate::anchor`]).
+//!
+//! *Sheets that touch (stop 55).* That kidney (256 seam vertices, native) now ends through itself
+//! on every free path (3.2e-2, 3.2e-2 and 2.5e-2 strained) and uncrossed only with contact
+//! across the seam, 7.0e-2 strained: the strain sits on the seam edges beside each piece's
+//! deepest bay (radius 4.3 mm), which meets the other piece where it bends gently. So does
+//! the slider from 12.9/16 to 14/16 (stretched by 5.4e-3 to 7.9e-2; 12.8/16 and 14.5/16
+//! converge), in 1.7–5.3 s. Surface Evolver, which has no contact, also ends that gluing
+//! through itself (75 crossing facet pairs, 9.2e-3 strained, `bench/evolver.bench.mjs`'s
+//! touch check): no free equilibrium is missed there; the form is one the sheets hold by
+//! touching, which this one-sided penalty does not relax to isometric. The closure below at
+//! 0.5°, 1° or 3° instead of 2° moves those answers both ways (12.95/16 converges at 0.5°,
+//! 14/16 goes from 7.9e-2 to 1.1e-1).
 //!
 //! *Across the seam.* The kidney with its mirror image at 5/16 and with its copy at 13/16 cross
 //! within 1–4 mm of the seam, between triangles within two edges of each other, which the term
