@@ -111,6 +111,26 @@ const star = polar(100, (t) => 50 * (1 + 0.28 * Math.cos(5 * t) ** 3));
 // 256 (core/src/simulate/sheet/level.rs, stop 54): 256 is 128's form refined at the seam.
 const star4 = polar(100, (t) => 50 * (1 + 0.22 * Math.cos(4 * t) ** 3));
 const star6 = polar(100, (t) => 50 * (1 + 0.15 * Math.cos(6 * t) ** 3));
+// A five-pointed star polygon (valleys at 0.45 of the tips' 50 mm) with every corner rounded by
+// `r` mm, as shapes.rs' star_polygon: sharp, it ends creased in a fifth of a second; rounded by
+// 0.1-0.5 mm, below what 256 seam samples resolve and above a kink (core/src/simulate/kink.rs,
+// stop 55), the sheet path does not find its form.
+const roundedPolygon = (pts, r) => ({ closed: true, points: pts.flatMap((b, k) => {
+  const n = pts.length;
+  const unit = (p, q) => { const l = Math.hypot(q[0] - p[0], q[1] - p[1]); return [(q[0] - p[0]) / l, (q[1] - p[1]) / l]; };
+  const [u, v] = [unit(b, pts[(k + n - 1) % n]), unit(b, pts[(k + 1) % n])];
+  const inside = Math.acos(Math.min(1, Math.max(-1, u[0] * v[0] + u[1] * v[1])));
+  const t = r / Math.tan(inside / 2);
+  const h = (4 / 3) * Math.tan((Math.PI - inside) / 4) * r;
+  const [a, c] = [[b[0] + u[0] * t, b[1] + u[1] * t], [b[0] + v[0] * t, b[1] + v[1] * t]];
+  return [{ anchor: a, left: a, right: [a[0] - u[0] * h, a[1] - u[1] * h] }, { anchor: c, left: [c[0] - v[0] * h, c[1] - v[1] * h], right: c }];
+}) });
+const starCorners = Array.from({ length: 10 }, (_, i) => {
+  const [radius, t] = [i % 2 === 0 ? 50 : 22.5, (Math.PI * i) / 5];
+  return [radius * Math.sin(t), radius * Math.cos(t)];
+});
+const starSharp = { closed: true, points: starCorners.map((p) => ({ anchor: p, left: p, right: p })) };
+const starRounded = roundedPolygon(starCorners, 0.25);
 // A heart as drawn in Illustrator: corner anchors at the dip and the tip (shapes.rs' drawn_heart).
 const knot = (anchor, left, right) => ({ anchor, left, right });
 const drawnHeart = { closed: true, points: [
@@ -212,10 +232,11 @@ function mirrorGap(r) {
 const nonConvex = [['Pebble + circle (the browser app sample)', pebble], ['kidney + circle', kidney],
   ['kidney + 2:1 ellipse at 1/8 (the issue\'s table)', kidney, scaled(ellipse(2, 1), m.measure(kidney).perimeter / m.measure(ellipse(2, 1)).perimeter), 1 / 8], ['five-lobed + circle', lobes], ['heart + circle', heart], ['heart drawn with corners + circle', drawnHeart], ['rounded star + circle', star],
   ['four-tipped star + circle', star4], ['six-tipped star + circle', star6],
+  ['five-pointed star polygon, sharp corners + circle', starSharp], ['the same star, corners rounded by 0.25 mm + circle', starRounded],
   ['heart drawn with corners + its copy at 3/16 (followed again)', drawnHeart, drawnHeart, 3 / 16],
   ['kidney + its copy at 13/16 (followed again, touching)', kidney, kidney, 13 / 16]];
 // The pieces above that are symmetric about a line (with a circle, so is their gluing).
-const mirrorSymmetric = new Set([lobes, heart, drawnHeart, star, star4, star6]);
+const mirrorSymmetric = new Set([lobes, heart, drawnHeart, star, star4, star6, starSharp, starRounded]);
 for (const [name, a, b, share] of nonConvex) {
   const pieces = [a, b ?? circleFor(a)];
   const offset = (share ?? 0) * m.measure(a).perimeter;
