@@ -2,6 +2,7 @@
 // Run: node bench/simulate.bench.mjs   (DFORMER_PKG overrides the package path)
 import { createRequire } from 'node:module';
 import { maxBend } from './evolver/check.mjs';
+import { polygonPath } from './evolver/outline.mjs';
 const require = createRequire(import.meta.url);
 const m = require(process.env.DFORMER_PKG ?? '../core/pkg/dformer.js');
 
@@ -129,7 +130,7 @@ const starCorners = Array.from({ length: 10 }, (_, i) => {
   const [radius, t] = [i % 2 === 0 ? 50 : 22.5, (Math.PI * i) / 5];
   return [radius * Math.sin(t), radius * Math.cos(t)];
 });
-const starSharp = { closed: true, points: starCorners.map((p) => ({ anchor: p, left: p, right: p })) };
+const starSharp = polygonPath(starCorners);
 const starRounded = roundedPolygon(starCorners, 0.25);
 // A heart as drawn in Illustrator: corner anchors at the dip and the tip (shapes.rs' drawn_heart).
 const knot = (anchor, left, right) => ({ anchor, left, right });
