@@ -115,7 +115,8 @@ const star6 = polar(100, (t) => 50 * (1 + 0.15 * Math.cos(6 * t) ** 3));
 // A five-pointed star polygon (valleys at 0.45 of the tips' 50 mm) with every corner rounded by
 // `r` mm, as shapes.rs' star_polygon: sharp, it ends creased in a fifth of a second; rounded by
 // 0.1-0.5 mm, below what 256 seam samples resolve and above a kink (core/src/simulate/kink.rs,
-// stop 55), the sheet path does not find its form.
+// stop 55), the sheet path does not find its form, and since stop 56 the preview takes the
+// roundings as corners instead (core/src/simulate/corners.rs): its time is both solves'.
 const roundedPolygon = (pts, r) => ({ closed: true, points: pts.flatMap((b, k) => {
   const n = pts.length;
   const unit = (p, q) => { const l = Math.hypot(q[0] - p[0], q[1] - p[1]); return [(q[0] - p[0]) / l, (q[1] - p[1]) / l]; };

@@ -210,13 +210,18 @@ fn closed_bounded_and_honest(a: dformer::api::path::PathDto, b: dformer::api::pa
     }
     // The gluing is exact to the stitching tolerance, except that each kink (a turn tighter
     // than the seam's steps, taken as a corner: `simulate::kink`) may move it by what its
-    // rounding loses, at most `KINK_SHIFT` of the perimeter; a pair without kinks keeps the
-    // plain tolerance.
-    let kinks: usize = pieces
+    // rounding loses: at most `KINK_SHIFT` of the perimeter for the seam's own kinks, and what
+    // it loses for a rounding the answer previews as a corner (`simulate::corners`, the kinks
+    // within `Limits::CORNERS`, which hold the seam's own); a pair without kinks keeps the plain
+    // tolerance.
+    use dformer::simulate::kink::{kinks_within, Limits, KINK_SHIFT};
+    let found: Vec<_> = pieces
         .iter()
-        .map(|p| dformer::simulate::kink::kinks(&dformer::arclen::ArcTable::new(&p.to_contour(0).unwrap(), 1e-11), &[]).len())
-        .sum();
-    let glued = (1e-6 + kinks as f64 * dformer::simulate::kink::KINK_SHIFT) * perimeter + if round.is_some() { 2.0 * turned } else { 0.0 };
+        .flat_map(|p| kinks_within(&dformer::arclen::ArcTable::new(&p.to_contour(0).unwrap(), 1e-11), &[], Limits::CORNERS))
+        .collect();
+    let kinks = found.len();
+    let moved: f64 = found.iter().map(|k| (k.before + k.after).max(KINK_SHIFT * perimeter)).sum();
+    let glued = 1e-6 * perimeter + moved + if round.is_some() { 2.0 * turned } else { 0.0 };
     // The seam starts at A's first anchor, or at a kink whose window holds it (the kink's
     // tight stretch and `KINK_WINDOW` even steps at `REFERENCE` samples either side).
     use dformer::simulate::density::{KINK_WINDOW, REFERENCE};

@@ -29,7 +29,9 @@
 //! creased, strained by at most 1.06e-3, in 0.3–0.4 s (the five-pointed one at 84,494 mm³, its
 //! sharp twin 82,618), those rounded by 0.25 mm not; the limits were not moved, because the rounded
 //! rectangle with a circle above, a convex pair, ended strained at 256 seam vertices with its
-//! 0.06 mm corners taken as kinks.
+//! 0.06 mm corners taken as kinks. Since stop 56 such stars are solved a second time with every
+//! tight turn taken as a kink ([`Limits::CORNERS`]) when the first answer misses its promise,
+//! and the better answer is kept ([`super::corners`]).
 
 use crate::libm_ext::LibmExt;
 use crate::arclen::{unit_tangent, ArcTable};
@@ -87,11 +89,38 @@ pub struct Kink {
     pub offset: f64,
 }
 
-/// The kinks of `t`: stretches inside segments, or across a smooth anchor, where the tangent
-/// turns by more than [`CORNER_TURN`] at a mean curvature above [`KINK_KAPPA_L`]` / L`. The
-/// middle is where the tangent has made half the stretch's turn. A stretch that reaches one of
-/// `corners` (arc lengths of the anchors that are corners) is that corner's, not a kink.
+/// Which tight turns are kinks: those whose deficit (both sides) and offset, relative to the
+/// perimeter, are at most `shift` and `offset` ([`kinks_within`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Limits {
+    pub shift: f64,
+    pub offset: f64,
+}
+
+impl Limits {
+    /// The seam's own: [`KINK_SHIFT`] and [`KINK_OFFSET`], turns the walk takes as corners
+    /// without moving the gluing or the chords beside them by more than a kerf.
+    pub const EXACT: Limits = Limits { shift: KINK_SHIFT, offset: KINK_OFFSET };
+
+    /// Every turn tighter than [`KINK_KAPPA_L`] (a rounding of radius below `L/768`, below what
+    /// the seam's graded steps resolve at 256 samples), whatever its deficit and offset: the
+    /// preview of such roundings as corners ([`crate::simulate::corners`]). Its seam edges
+    /// beside a kink are off their arcs by the deficit, spread over the seam, and by `d²/2h`
+    /// (module docs, [`KINK_OFFSET`]), which the answer's strain then shows.
+    pub const CORNERS: Limits = Limits { shift: f64::INFINITY, offset: f64::INFINITY };
+}
+
+/// The kinks of `t` within [`Limits::EXACT`] ([`kinks_within`]).
 pub fn kinks(t: &ArcTable, corners: &[f64]) -> Vec<Kink> {
+    kinks_within(t, corners, Limits::EXACT)
+}
+
+/// The kinks of `t`: stretches inside segments, or across a smooth anchor, where the tangent
+/// turns by more than [`CORNER_TURN`] at a mean curvature above [`KINK_KAPPA_L`]` / L`, within
+/// `limits`. The middle is where the tangent has made half the stretch's turn. A stretch that
+/// reaches one of `corners` (arc lengths of the anchors that are corners) is that corner's, not
+/// a kink.
+pub fn kinks_within(t: &ArcTable, corners: &[f64], limits: Limits) -> Vec<Kink> {
     let total = t.total();
     if !(total > 0.0) {
         return Vec::new();
@@ -166,7 +195,7 @@ pub fn kinks(t: &ArcTable, corners: &[f64]) -> Vec<Kink> {
             let offset = (pm - pa).cross(ta).abs().max((pb - pm).cross(tb).abs());
             Kink { at: t.wrap(at), from: a, to: b, before, after, offset }
         })
-        .filter(|k| k.before + k.after <= KINK_SHIFT * total && k.offset <= KINK_OFFSET * total)
+        .filter(|k| k.before + k.after <= limits.shift * total && k.offset <= limits.offset * total)
         .collect()
 }
 

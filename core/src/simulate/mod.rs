@@ -99,7 +99,9 @@
 //!   offset does not change the form either (solved at offset 0, the circle turned), and a B
 //!   that a turn of 2π/k carries onto itself (solved within the first k-th of the perimeter);
 //!   [`fit`]: the least-squares turn and shift of one planar point set onto another;
-//! - [`density`]: seam samples spaced by the curvature mismatch of the two pieces;
+//! - [`density`]: seam samples spaced by the curvature mismatch of the two pieces; [`kink`]:
+//!   turns too tight for the seam, taken as corners; [`corners`]: roundings below the seam's
+//!   resolution previewed as corners when the sheet cannot follow them;
 //! - [`checks`]: dihedral signs, convexity as a whole, flat folds; [`stats`]: strain, seam gap,
 //!   area, angle defects, volume; [`clock`]: a timer that works natively and in wasm32.
 //!
@@ -113,6 +115,7 @@ pub mod anchor;
 pub mod checks;
 pub mod clock;
 pub mod convex;
+pub mod corners;
 pub mod density;
 pub mod fit;
 pub mod frame;
@@ -186,21 +189,21 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
     // no mesh to draw, keeps the frames square to the input (a rectangle drawn square is solved
     // square: turned, its sides were no longer straight to the bit, and the convex path took 1.7
     // times the steps).
-    let framed = |a: &Contour, b: &Contour, offset: f64, turned: bool| -> Result<Framed> {
+    let framed = |a: &Contour, b: &Contour, offset: f64, turned: bool, limits: kink::Limits| -> Result<Framed> {
         let ((framed_a, fa), (framed_b, fb)) = frame::pair(a, b, turned);
         let options = SimulateOptions {
             offset: frame::offset(offset, b, &fb),
             warm: options.warm.as_ref().map(|w| w.iter().map(|p| p.map(|c| c / fa.unit)).collect()),
             ..options.clone()
         };
-        let glue = seam::Glue::new(&framed_a, &framed_b, options.offset).map_err(|e| match e {
+        let glue = seam::Glue::with_kinks(&framed_a, &framed_b, options.offset, limits).map_err(|e| match e {
             Error::PerimeterMismatch { a, b } => Error::PerimeterMismatch { a: fa.length_out(a), b: fa.length_out(b) },
             e => e,
         })?;
         Ok((framed_a, fa, framed_b, fb, options, glue))
     };
     let drawn = (a, b, options.offset);
-    let plain = framed(a, b, options.offset, false)?;
+    let plain = framed(a, b, options.offset, false, kink::Limits::EXACT)?;
     // Convex at the coarsest samples and at the resolution's: an outline that bends inward by
     // a hair between coarse samples (a 200 × 40 ellipse through 64 smooth points) is no convex
     // metric at the resolution, and the convex path would spend the whole budget on it.
@@ -208,7 +211,7 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
     let per_start = options.max_iterations.min(options::START_MAX_ITERATIONS);
     let with_cap = |f: Framed, cap: usize| (f.0, f.1, f.2, f.3, SimulateOptions { max_iterations: cap, ..f.4 }, f.5);
     if convex {
-        let mut sim = in_frames(with_cap(plain, per_start), true, None, observe, false)?;
+        let mut sim = in_frames(with_cap(plain, per_start), true, None, observe, false, kink::Limits::EXACT)?;
         sim.stats.ms = timer.elapsed_ms();
         return Ok(sim);
     }
@@ -225,14 +228,22 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
         drawn
     };
     let starts = anchor::restarts(drawn.0, drawn.1, drawn.2);
-    let solve_from = |k: usize, cap: usize, observe: &mut dyn FnMut(progress::Progress), interims: bool| -> Result<Simulation> {
+    let framed_from = |k: usize, limits: kink::Limits| -> Result<Framed> {
         let (ra, rb, offset) = starts[k].as_ref().map_or((drawn.0, drawn.1, drawn.2), |(ra, rb, offset)| (ra, rb, *offset));
+        framed(ra, rb, offset, true, limits)
+    };
+    let solve_in = |k: usize, f: Framed, limits: kink::Limits, cap: usize, observe: &mut dyn FnMut(progress::Progress), interims: bool| -> Result<Simulation> {
         let at = starts[k].as_ref().map(|_| drawn.0.knots()[0].anchor);
-        in_frames(with_cap(framed(ra, rb, offset, true)?, cap), false, at, observe, interims)
+        in_frames(with_cap(f, cap), false, at, observe, interims, limits)
+    };
+    let solve_from = |k: usize, cap: usize, observe: &mut dyn FnMut(progress::Progress), interims: bool| -> Result<Simulation> {
+        solve_in(k, framed_from(k, kink::Limits::EXACT)?, kink::Limits::EXACT, cap, observe, interims)
     };
     // An interim form is in the order the pieces were picked, and timed from the request.
     let first_anchor = a.knots()[0].anchor;
+    let shown = std::cell::Cell::new(0);
     let mut picked_order = |mut p: progress::Progress| {
+        shown.set(p.done);
         if let Some(sim) = p.interim.take() {
             let mut sim = if swap { picked::swap_back(*sim, first_anchor) } else { *sim };
             sim.stats.ms = timer.elapsed_ms();
@@ -240,19 +251,31 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
         }
         observe(p)
     };
-    let mut done = 0;
     let mut told = false;
     let mut sim = solve_from(0, per_start, &mut |p: progress::Progress| {
-        done = p.done;
         told |= p.interim.is_some();
         picked_order(p)
     }, interims)?;
     let left = options.max_iterations.saturating_sub(sim.stats.iterations);
     if left > 0 && anchor::retry(&sim, sheet::FAR_ABOVE * sheet::STRAIN_TARGET, sheet::retry::TOUCH_BELOW) {
         // The second start's stages fill what the first left of the progress bar.
+        let done = shown.get();
         let mut after = |p: progress::Progress| picked_order(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
         let other = solve_from(1, left.min(options::START_MAX_ITERATIONS), &mut after, interims && !told)?;
         sim = anchor::better(sim, other);
+    }
+    // Still missing its promise, on a pair with roundings below the seam's resolution: those
+    // previewed as corners from the first start ([`corners`]), the better answer kept; its
+    // stages fill what is left of the progress bar.
+    let left = options.max_iterations.saturating_sub(sim.stats.iterations);
+    if left > 0 && corners::missed(&sim) {
+        let with_corners = framed_from(0, kink::Limits::CORNERS)?;
+        if with_corners.5.kinks() > framed_from(0, kink::Limits::EXACT)?.5.kinks() {
+            let done = shown.get();
+            let mut after = |p: progress::Progress| picked_order(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
+            let other = solve_in(0, with_corners, kink::Limits::CORNERS, left.min(options::START_MAX_ITERATIONS), &mut after, false)?;
+            sim = anchor::better(sim, other);
+        }
     }
     if swap {
         sim = picked::swap_back(sim, first_anchor);
@@ -269,7 +292,7 @@ type Framed = (Contour, frame::Frame, Contour, frame::Frame, SimulateOptions, se
 /// nearest `seam_start` (A's drawn first anchor, for a pair solved from another start) when
 /// given. An interim form (`interims`, [`progress`]) is told to `observe` in the same units and
 /// place.
-fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, observe: &mut dyn FnMut(progress::Progress), interims: bool) -> Result<Simulation> {
+fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, observe: &mut dyn FnMut(progress::Progress), interims: bool, limits: kink::Limits) -> Result<Simulation> {
     let (a, fa, b, fb, options, glue) = framed;
     let options = &options;
     // A non-convex piece with a circle: every offset is the offset-0 form with the circle turned
@@ -297,9 +320,9 @@ fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, obs
     let glue = match (&canonical, &turn) {
         (Some((c, circle)), _) => {
             let (ga, gb) = if c.piece == 0 { (circle, &b) } else { (&a, circle) };
-            seam::Glue::new(ga, gb, 0.0)?
+            seam::Glue::with_kinks(ga, gb, 0.0, limits)?
         }
-        (None, Some((_, at))) => seam::Glue::new(&a, &b, fb.snap(*at))?,
+        (None, Some((_, at))) => seam::Glue::with_kinks(&a, &b, fb.snap(*at), limits)?,
         (None, None) => glue,
     };
     // A pair with a non-convex piece: the convex path gives the sheet path its start (or, when

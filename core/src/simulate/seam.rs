@@ -19,7 +19,7 @@ use crate::contour::Contour;
 use crate::error::{Error, Result};
 use crate::validate;
 use super::density::{Density, KINK_WINDOW, REFERENCE};
-use super::kink::{kinks, Walk};
+use super::kink::{kinks_within, Limits, Walk};
 use super::metric::KeyMap;
 use std::cell::RefCell;
 
@@ -96,6 +96,8 @@ pub struct Glue {
     density: Option<Density>,
     /// Each piece walked along the seam, its kinks taken as corners ([`Walk`]).
     walk: [Walk; 2],
+    /// The number of kinks of both pieces.
+    kinks: usize,
     /// The points sampled so far, shared by every call of [`Glue::sample`] and
     /// [`Glue::sample_levels`] (see [`Glue::sample_cached`]).
     points: RefCell<[(KeyMap, Vec<[f64; 2]>); 2]>,
@@ -104,6 +106,11 @@ pub struct Glue {
 impl Glue {
     /// Checks both outlines and their perimeters (the 1e-6 rule of `connect`).
     pub fn new(a: &Contour, b: &Contour, offset: f64) -> Result<Self> {
+        Self::with_kinks(a, b, offset, Limits::EXACT)
+    }
+
+    /// [`Glue::new`] with the tight turns within `limits` taken as kinks ([`super::kink`]).
+    pub fn with_kinks(a: &Contour, b: &Contour, offset: f64, limits: Limits) -> Result<Self> {
         validate::check_outline(a, 0)?;
         validate::check_outline(b, 1)?;
         for (i, c) in [a, b].into_iter().enumerate() {
@@ -129,7 +136,7 @@ impl Glue {
         // B's arc lengths run over its own perimeter, which may differ from A's by the tolerance
         // (each walk is scaled to A's).
         let anchors = [anchor_corners(&ta), anchor_corners(&tb)];
-        let kinks = [kinks(&ta, &anchors[0]), kinks(&tb, &anchors[1])];
+        let kinks = [kinks_within(&ta, &anchors[0], limits), kinks_within(&tb, &anchors[1], limits)];
         // The seam starts at A's first anchor, or at a kink whose window (its tight stretch and
         // what the density leaves out beside it) holds that anchor: a sample there would cut
         // the kink's turn, and the samples nested between it and the kink would all lie in it
@@ -158,7 +165,13 @@ impl Glue {
         }
         crate::order::sort_f64(&mut corners);
         let density = Density::new(&ta, &tb, starts, [&kinks[0], &kinks[1]]);
-        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], corners, density, walk, points: Default::default() })
+        let kinks = kinks[0].len() + kinks[1].len();
+        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], corners, density, walk, kinks, points: Default::default() })
+    }
+
+    /// How many turns of the two pieces the seam takes as kinks.
+    pub fn kinks(&self) -> usize {
+        self.kinks
     }
 
     /// Seam positions of `n` samples: equal steps `h = L/n` from 0, with the nearest free sample
