@@ -256,17 +256,10 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
         told |= p.interim.is_some();
         picked_order(p)
     }, interims)?;
-    let left = options.max_iterations.saturating_sub(sim.stats.iterations);
-    if left > 0 && anchor::retry(&sim, sheet::FAR_ABOVE * sheet::STRAIN_TARGET, sheet::retry::TOUCH_BELOW) {
-        // The second start's stages fill what the first left of the progress bar.
-        let done = shown.get();
-        let mut after = |p: progress::Progress| picked_order(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
-        let other = solve_from(1, left.min(options::START_MAX_ITERATIONS), &mut after, interims && !told)?;
-        sim = anchor::better(sim, other);
-    }
-    // Still missing its promise, on a pair with roundings below the seam's resolution: those
-    // previewed as corners from the first start ([`corners`]), the better answer kept; its
-    // stages fill what is left of the progress bar.
+    // Missing its promise, on a pair with roundings below the seam's resolution: those
+    // previewed as corners from the first start ([`corners`]), the better answer kept, before
+    // a second start, which then runs only if that still misses. Each fills what the solves
+    // before it left of the progress bar.
     let left = options.max_iterations.saturating_sub(sim.stats.iterations);
     if left > 0 && corners::missed(&sim) {
         let with_corners = framed_from(0, kink::Limits::CORNERS)?;
@@ -276,6 +269,13 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
             let other = solve_in(0, with_corners, kink::Limits::CORNERS, left.min(options::START_MAX_ITERATIONS), &mut after, false)?;
             sim = anchor::better(sim, other);
         }
+    }
+    let left = options.max_iterations.saturating_sub(sim.stats.iterations);
+    if left > 0 && anchor::retry(&sim, sheet::FAR_ABOVE * sheet::STRAIN_TARGET, sheet::retry::TOUCH_BELOW) {
+        let done = shown.get();
+        let mut after = |p: progress::Progress| picked_order(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
+        let other = solve_from(1, left.min(options::START_MAX_ITERATIONS), &mut after, interims && !told)?;
+        sim = anchor::better(sim, other);
     }
     if swap {
         sim = picked::swap_back(sim, first_anchor);
