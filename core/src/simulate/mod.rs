@@ -256,18 +256,18 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
         told |= p.interim.is_some();
         picked_order(p)
     }, interims)?;
-    // Missing its promise, on a pair with roundings below the seam's resolution: those
-    // previewed as corners from the first start ([`corners`]), the better answer kept, before
-    // a second start, which then runs only if that still misses. Each fills what the solves
-    // before it left of the progress bar.
+    // Not converged, on a pair with roundings below the seam's resolution: those previewed as
+    // corners from the first start ([`corners`]), the better answer kept, before a second start,
+    // which then runs only if that still misses. Each fills what the solves before it left of
+    // the progress bar.
     let left = options.max_iterations.saturating_sub(sim.stats.iterations);
-    if left > 0 && corners::missed(&sim) {
+    if left > 0 && !sim.stats.converged {
         let with_corners = framed_from(0, kink::Limits::CORNERS)?;
         if with_corners.5.kinks() > framed_from(0, kink::Limits::EXACT)?.5.kinks() {
             let done = shown.get();
             let mut after = |p: progress::Progress| picked_order(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
-            let other = solve_in(0, with_corners, kink::Limits::CORNERS, left.min(options::START_MAX_ITERATIONS), &mut after, false)?;
-            sim = anchor::better(sim, other);
+            let preview = solve_in(0, with_corners, kink::Limits::CORNERS, left.min(options::START_MAX_ITERATIONS), &mut after, false)?;
+            sim = corners::better(sim, preview);
         }
     }
     let left = options.max_iterations.saturating_sub(sim.stats.iterations);
