@@ -211,7 +211,7 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
     let per_start = options.max_iterations.min(options::START_MAX_ITERATIONS);
     let with_cap = |f: Framed, cap: usize| (f.0, f.1, f.2, f.3, SimulateOptions { max_iterations: cap, ..f.4 }, f.5);
     if convex {
-        let mut sim = in_frames(with_cap(plain, per_start), true, None, observe, false, kink::Limits::EXACT)?;
+        let mut sim = in_frames(with_cap(plain, per_start), true, None, observe, false)?;
         sim.stats.ms = timer.elapsed_ms();
         return Ok(sim);
     }
@@ -232,12 +232,9 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
         let (ra, rb, offset) = starts[k].as_ref().map_or((drawn.0, drawn.1, drawn.2), |(ra, rb, offset)| (ra, rb, *offset));
         framed(ra, rb, offset, true, limits)
     };
-    let solve_in = |k: usize, f: Framed, limits: kink::Limits, cap: usize, observe: &mut dyn FnMut(progress::Progress), interims: bool| -> Result<Simulation> {
+    let solve_in = |k: usize, f: Framed, cap: usize, observe: &mut dyn FnMut(progress::Progress), interims: bool| -> Result<Simulation> {
         let at = starts[k].as_ref().map(|_| drawn.0.knots()[0].anchor);
-        in_frames(with_cap(f, cap), false, at, observe, interims, limits)
-    };
-    let solve_from = |k: usize, cap: usize, observe: &mut dyn FnMut(progress::Progress), interims: bool| -> Result<Simulation> {
-        solve_in(k, framed_from(k, kink::Limits::EXACT)?, kink::Limits::EXACT, cap, observe, interims)
+        in_frames(with_cap(f, cap), false, at, observe, interims)
     };
     // An interim form is in the order the pieces were picked, and timed from the request.
     let first_anchor = a.knots()[0].anchor;
@@ -252,7 +249,9 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
         observe(p)
     };
     let mut told = false;
-    let mut sim = solve_from(0, per_start, &mut |p: progress::Progress| {
+    let first = framed_from(0, kink::Limits::EXACT)?;
+    let exact_kinks = first.5.kinks();
+    let mut sim = solve_in(0, first, per_start, &mut |p: progress::Progress| {
         told |= p.interim.is_some();
         picked_order(p)
     }, interims)?;
@@ -263,10 +262,10 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
     let left = options.max_iterations.saturating_sub(sim.stats.iterations);
     if left > 0 && !sim.stats.converged {
         let with_corners = framed_from(0, kink::Limits::CORNERS)?;
-        if with_corners.5.kinks() > framed_from(0, kink::Limits::EXACT)?.5.kinks() {
+        if with_corners.5.kinks() > exact_kinks {
             let done = shown.get();
             let mut after = |p: progress::Progress| picked_order(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
-            let preview = solve_in(0, with_corners, kink::Limits::CORNERS, left.min(options::START_MAX_ITERATIONS), &mut after, false)?;
+            let preview = solve_in(0, with_corners, left.min(options::START_MAX_ITERATIONS), &mut after, false)?;
             sim = corners::better(sim, preview);
         }
     }
@@ -274,7 +273,7 @@ fn run(a: &Contour, b: &Contour, options: &SimulateOptions, observe: &mut dyn Fn
     if left > 0 && anchor::retry(&sim, sheet::FAR_ABOVE * sheet::STRAIN_TARGET, sheet::retry::TOUCH_BELOW) {
         let done = shown.get();
         let mut after = |p: progress::Progress| picked_order(progress::Progress { done: done + p.done * (p.total - done) / p.total.max(1), ..p });
-        let other = solve_from(1, left.min(options::START_MAX_ITERATIONS), &mut after, interims && !told)?;
+        let other = solve_in(1, framed_from(1, kink::Limits::EXACT)?, left.min(options::START_MAX_ITERATIONS), &mut after, interims && !told)?;
         sim = anchor::better(sim, other);
     }
     if swap {
@@ -291,9 +290,11 @@ type Framed = (Contour, frame::Frame, Contour, frame::Frame, SimulateOptions, se
 /// after it; the answer in the input's units and place, its `seam` started at the seam vertex
 /// nearest `seam_start` (A's drawn first anchor, for a pair solved from another start) when
 /// given. An interim form (`interims`, [`progress`]) is told to `observe` in the same units and
-/// place.
-fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, observe: &mut dyn FnMut(progress::Progress), interims: bool, limits: kink::Limits) -> Result<Simulation> {
+/// place. A gluing rebuilt here (a circle's canonical one, a turned one) keeps the kink limits of
+/// the framed one ([`seam::Glue::limits`]).
+fn in_frames(framed: Framed, convex: bool, seam_start: Option<kurbo::Point>, observe: &mut dyn FnMut(progress::Progress), interims: bool) -> Result<Simulation> {
     let (a, fa, b, fb, options, glue) = framed;
+    let limits = glue.limits();
     let options = &options;
     // A non-convex piece with a circle: every offset is the offset-0 form with the circle turned
     // ([`round`]), so it is solved at offset 0, on one mesh of the circle.

@@ -96,7 +96,8 @@ pub struct Glue {
     density: Option<Density>,
     /// Each piece walked along the seam, its kinks taken as corners ([`Walk`]).
     walk: [Walk; 2],
-    /// The number of kinks of both pieces.
+    /// The limits its kinks were found within, and their number on both pieces.
+    limits: Limits,
     kinks: usize,
     /// The points sampled so far, shared by every call of [`Glue::sample`] and
     /// [`Glue::sample_levels`] (see [`Glue::sample_cached`]).
@@ -166,7 +167,12 @@ impl Glue {
         crate::order::sort_f64(&mut corners);
         let density = Density::new(&ta, &tb, starts, [&kinks[0], &kinks[1]]);
         let kinks = kinks[0].len() + kinks[1].len();
-        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], corners, density, walk, kinks, points: Default::default() })
+        Ok(Glue { ta, tb, area: [a.signed_area().abs(), b.signed_area().abs()], corners, density, walk, limits, kinks, points: Default::default() })
+    }
+
+    /// The limits within which the seam takes tight turns as kinks ([`Glue::with_kinks`]).
+    pub fn limits(&self) -> Limits {
+        self.limits
     }
 
     /// How many turns of the two pieces the seam takes as kinks.
