@@ -20,9 +20,9 @@
 //! roundings (the walk's deficits spread over the seam, and `d²/2h` beside each kink:
 //! [`super::kink::KINK_OFFSET`]), mostly the floor of its seam samples, so it is worded as held
 //! by its samples ([`Shortfall::Sampling`]) or creased. At 256 seam vertices 11 of the 12 stars
-//! end so (strained by at most 1.07e-2, volumes 0.3–6.7 % from their sharp twins'), 10 of them
-//! within 0.3 % of their volume at 128; the twelfth (five points, valleys at 0.6, 0.1 mm) ends
-//! 7.9e-2 stretched instead of 0.21.
+//! end so (strained by at most 1.07e-2, volumes 0.3–6.7 % from their sharp twins'), and all
+//! twelve within 0.6 % of their volume at 128 ([`better`]); the twelfth (five points, valleys at
+//! 0.6, 0.1 mm) ends 7.9e-2 stretched instead of 0.21.
 //!
 //! Other drawings with such roundings, with a circle (256 seam vertices, native): the dart (one
 //! reflex corner) rounded by 0.1 mm ends 8.9e-3 strained, held by its samples, 1.1 % from its

@@ -30,8 +30,8 @@
 //! sharp twin 82,618), those rounded by 0.25 mm not; the limits were not moved, because the rounded
 //! rectangle with a circle above, a convex pair, ended strained at 256 seam vertices with its
 //! 0.06 mm corners taken as kinks. Since stop 56 such stars are solved a second time with every
-//! tight turn taken as a kink ([`Limits::CORNERS`]) when the first answer misses its promise,
-//! and the better answer is kept ([`super::corners`]).
+//! tight turn taken as a kink ([`Limits::CORNERS`]) when the first answer is not converged, and
+//! the better answer is kept ([`super::corners`]).
 
 use crate::libm_ext::LibmExt;
 use crate::arclen::{unit_tangent, ArcTable};
